@@ -1,0 +1,657 @@
+//! The exported functions of the classic OpenCRG C API.
+//!
+//! Each function checks its pointers, looks up its id, calls the core crate and
+//! turns the `Result` into the classic 1/0 (or id/-1) return; the whole body runs
+//! inside [`guard`], so a panic becomes an error return.
+
+use crate::alloc;
+use crate::msg;
+use crate::panic::guard;
+use crate::registry::{self, Cp};
+use opencrg::settings::{describe, name, Family, Kind, Value};
+use opencrg::{Road, Settings};
+use std::ffi::{c_char, c_int, c_uint, c_void, CStr};
+use std::sync::atomic::{AtomicBool, Ordering};
+
+static SUPPRESS_NOT_FOUND: AtomicBool = AtomicBool::new(false);
+
+/// Writes through an out pointer the caller gave us.
+fn put<T>(p: *mut T, v: T) {
+    // SAFETY: every caller checked `p` for null; the API contract makes it point to a T.
+    unsafe { p.write(v) }
+}
+
+fn report_unknown(what: &str, func: &str, id: c_int) {
+    msg::warn(&format!("{func}: invalid {what} id <{id}>"));
+}
+
+fn cp_call<R: Copy>(func: &str, id: c_int, on_error: R, f: impl FnOnce(&mut Cp) -> R) -> R {
+    guard(func, on_error, || match registry::with_cp(id, f) {
+        Some(r) => r,
+        None => {
+            report_unknown("contact point", func, id);
+            on_error
+        }
+    })
+}
+
+fn road_read<R: Copy>(func: &str, id: c_int, on_error: R, f: impl FnOnce(&Road) -> R) -> R {
+    guard(func, on_error, || match registry::with_dataset(id, |d| f(&d.road)) {
+        Some(r) => r,
+        None => {
+            report_unknown("data set", func, id);
+            on_error
+        }
+    })
+}
+
+fn road_write<R: Copy>(func: &str, id: c_int, on_error: R, f: impl FnOnce(&mut Road) -> R) -> R {
+    guard(func, on_error, || match registry::modify_road(id, f) {
+        Some(r) => r,
+        None => {
+            report_unknown("data set", func, id);
+            on_error
+        }
+    })
+}
+
+fn ok(r: opencrg::Result<()>, func: &str) -> c_int {
+    match r {
+        Ok(()) => 1,
+        Err(e) => {
+            msg::warn(&format!("{func}: {e}"));
+            0
+        }
+    }
+}
+
+// ---------------------------------------------------------------- loading
+
+/// Reads a CRG file; returns the data set id (> 0) or 0.
+#[no_mangle]
+pub extern "C" fn crgLoaderReadFile(filename: *const c_char) -> c_int {
+    guard("crgLoaderReadFile", 0, || {
+        if filename.is_null() {
+            msg::fatal("crgLoaderReadFile: no file name given");
+            return 0;
+        }
+        // SAFETY: a non-null, NUL-terminated string from the caller.
+        let bytes = unsafe { CStr::from_ptr(filename) }.to_bytes();
+        let path = std::path::PathBuf::from(<std::ffi::OsStr as std::os::unix::ffi::OsStrExt>::from_bytes(bytes));
+        match Road::load(&path) {
+            Ok(road) => {
+                for w in road.warnings() {
+                    msg::warn(w);
+                }
+                if let Some(n) = road.header().warn_msgs {
+                    msg::set_max_warnings(n);
+                }
+                let id = registry::add_dataset(road);
+                msg::send(msg::NOTICE, &format!("crgLoaderReadFile: finished reading file <{}>", path.display()));
+                id
+            }
+            Err(e) => {
+                let not_found =
+                    matches!(&e, opencrg::Error::Io { source, .. } if source.kind() == std::io::ErrorKind::NotFound);
+                if !(not_found && SUPPRESS_NOT_FOUND.load(Ordering::Relaxed)) {
+                    msg::fatal(&format!("crgLoaderReadFile: {e}"));
+                }
+                0
+            }
+        }
+    })
+}
+
+/// Suppresses the fatal message for files that do not exist.
+#[no_mangle]
+pub extern "C" fn crgLoaderSuppressFileNotFoundFatalMsg(suppress: bool) {
+    SUPPRESS_NOT_FOUND.store(suppress, Ordering::Relaxed);
+}
+
+/// Checks a data set's options, modifiers and (when asked) curvature.
+#[no_mangle]
+pub extern "C" fn crgCheck(dataSetId: c_int) -> c_int {
+    road_write("crgCheck", dataSetId, 0, |r| match r.check() {
+        Ok(()) => 1,
+        Err(e) => {
+            msg::fatal(&format!("crgCheck: {e}"));
+            0
+        }
+    })
+}
+
+/// Releases a data set and its contact points.
+#[no_mangle]
+pub extern "C" fn crgDataSetRelease(dataSetId: c_int) -> c_int {
+    guard("crgDataSetRelease", 0, || c_int::from(registry::release_dataset(dataSetId)))
+}
+
+/// Releases every data set.
+#[no_mangle]
+pub extern "C" fn crgMemRelease() {
+    guard("crgMemRelease", (), || {
+        for id in registry::dataset_ids() {
+            registry::release_dataset(id);
+        }
+    })
+}
+
+/// The library's release text.
+#[no_mangle]
+pub extern "C" fn crgGetReleaseInfo() -> *const c_char {
+    c"OpenCRG Rust library 2.0.1 (classic C API 2.0.1 compatible)".as_ptr()
+}
+
+// ---------------------------------------------------------------- data set queries
+
+fn two_out(a: *mut f64, b: *mut f64, f: impl FnOnce() -> Option<(f64, f64)>) -> c_int {
+    if a.is_null() || b.is_null() {
+        return 0;
+    }
+    match f() {
+        Some((x, y)) => {
+            put(a, x);
+            put(b, y);
+            1
+        }
+        None => 0,
+    }
+}
+
+/// u range of a data set.
+#[no_mangle]
+pub extern "C" fn crgDataSetGetURange(dataSetId: c_int, uMin: *mut f64, uMax: *mut f64) -> c_int {
+    guard("crgDataSetGetURange", 0, || two_out(uMin, uMax, || registry::with_dataset(dataSetId, |d| d.road.u_range())))
+}
+
+/// v range of a data set.
+#[no_mangle]
+pub extern "C" fn crgDataSetGetVRange(dataSetId: c_int, vMin: *mut f64, vMax: *mut f64) -> c_int {
+    guard("crgDataSetGetVRange", 0, || two_out(vMin, vMax, || registry::with_dataset(dataSetId, |d| d.road.v_range())))
+}
+
+/// u and v increments of a data set.
+#[no_mangle]
+pub extern "C" fn crgDataSetGetIncrements(dataSetId: c_int, uInc: *mut f64, vInc: *mut f64) -> c_int {
+    guard("crgDataSetGetIncrements", 0, || {
+        two_out(uInc, vInc, || registry::with_dataset(dataSetId, |d| d.road.increments()))
+    })
+}
+
+/// Whether the reference line can be closed, and over which u range.
+#[no_mangle]
+pub extern "C" fn crgDataSetGetUtilityDataClosedTrack(
+    dataSetId: c_int,
+    uIsClosed: *mut c_int,
+    uCloseMin: *mut f64,
+    uCloseMax: *mut f64,
+) -> c_int {
+    guard("crgDataSetGetUtilityDataClosedTrack", 0, || {
+        if uIsClosed.is_null() || uCloseMin.is_null() || uCloseMax.is_null() {
+            return 0;
+        }
+        match registry::with_dataset(dataSetId, |d| d.road.closed_track()) {
+            Some(closed) => {
+                put(uIsClosed, c_int::from(closed.is_some()));
+                let (a, b) = closed.unwrap_or((0.0, 0.0));
+                put(uCloseMin, a);
+                put(uCloseMax, b);
+                1
+            }
+            None => 0,
+        }
+    })
+}
+
+// ---------------------------------------------------------------- settings
+
+fn set_value(table: &mut Settings, id: c_uint, value: Value, func: &str) -> c_int {
+    let r = match value {
+        Value::Int(i) => table.set_int(id, i),
+        Value::Double(d) => table.set_double(id, d),
+    };
+    ok(r.map_err(Into::into), func)
+}
+
+fn get_int(table: &Settings, id: c_uint, out: *mut c_int) -> c_int {
+    match (out.is_null(), describe(id), table.get(id)) {
+        (false, Some((_, Kind::Int)), Some(Value::Int(v))) => {
+            put(out, v);
+            1
+        }
+        _ => 0,
+    }
+}
+
+fn get_double(table: &Settings, id: c_uint, out: *mut f64) -> c_int {
+    match (out.is_null(), describe(id), table.get(id)) {
+        (false, Some((_, Kind::Double)), Some(Value::Double(v))) => {
+            put(out, v);
+            1
+        }
+        _ => 0,
+    }
+}
+
+/// Sets an integer modifier of a data set.
+#[no_mangle]
+pub extern "C" fn crgDataSetModifierSetInt(dataSetId: c_int, optionId: c_uint, optionValue: c_int) -> c_int {
+    road_write("crgDataSetModifierSetInt", dataSetId, 0, |r| {
+        set_value(r.modifiers_mut(), optionId, Value::Int(optionValue), "crgDataSetModifierSetInt")
+    })
+}
+
+/// Sets a double modifier of a data set.
+#[no_mangle]
+pub extern "C" fn crgDataSetModifierSetDouble(dataSetId: c_int, optionId: c_uint, optionValue: f64) -> c_int {
+    road_write("crgDataSetModifierSetDouble", dataSetId, 0, |r| {
+        set_value(r.modifiers_mut(), optionId, Value::Double(optionValue), "crgDataSetModifierSetDouble")
+    })
+}
+
+/// Reads an integer modifier of a data set.
+#[no_mangle]
+pub extern "C" fn crgDataSetModifierGetInt(dataSetId: c_int, optionId: c_uint, optionValue: *mut c_int) -> c_int {
+    road_read("crgDataSetModifierGetInt", dataSetId, 0, |r| get_int(r.modifiers(), optionId, optionValue))
+}
+
+/// Reads a double modifier of a data set.
+#[no_mangle]
+pub extern "C" fn crgDataSetModifierGetDouble(dataSetId: c_int, optionId: c_uint, optionValue: *mut f64) -> c_int {
+    road_read("crgDataSetModifierGetDouble", dataSetId, 0, |r| get_double(r.modifiers(), optionId, optionValue))
+}
+
+/// Removes one modifier of a data set.
+#[no_mangle]
+pub extern "C" fn crgDataSetModifierRemove(dataSetId: c_int, modId: c_uint) -> c_int {
+    road_write("crgDataSetModifierRemove", dataSetId, 0, |r| c_int::from(r.modifiers_mut().remove(modId)))
+}
+
+/// Removes every modifier of a data set.
+#[no_mangle]
+pub extern "C" fn crgDataSetModifierRemoveAll(dataSetId: c_int) -> c_int {
+    road_write("crgDataSetModifierRemoveAll", dataSetId, 0, |r| {
+        r.modifiers_mut().clear();
+        1
+    })
+}
+
+/// Restores the default modifiers of a data set.
+#[no_mangle]
+pub extern "C" fn crgDataSetModifierSetDefault(dataSetId: c_int) {
+    road_write("crgDataSetModifierSetDefault", dataSetId, (), |r| r.modifiers_mut().reset_modifiers())
+}
+
+/// Restores the default options a data set gives its new contact points.
+#[no_mangle]
+pub extern "C" fn crgDataSetOptionSetDefault(dataSetId: c_int) {
+    road_write("crgDataSetOptionSetDefault", dataSetId, (), |r| r.options_mut().reset_options())
+}
+
+/// Applies a data set's modifiers to its data.
+#[no_mangle]
+pub extern "C" fn crgDataSetModifiersApply(dataSetId: c_int) {
+    road_write("crgDataSetModifiersApply", dataSetId, (), |r| r.apply_modifiers())
+}
+
+fn print_settings(table: &Settings, label: &str) {
+    msg::send(msg::NOTICE, &format!("crgOptionsPrint: available {label}s:"));
+    let mut any = false;
+    for (id, v) in table.iter() {
+        any = true;
+        let value = match v {
+            Value::Int(i) => i.to_string(),
+            Value::Double(d) => format!("{d:.4}"),
+        };
+        msg::send(msg::NOTICE, &format!("    {label:>8} = \"{}\"\n       value = {value}", name(id)));
+    }
+    if !any {
+        msg::send(msg::NOTICE, &format!("    {label}s disabled or none set"));
+    }
+}
+
+/// Prints a data set's modifiers.
+#[no_mangle]
+pub extern "C" fn crgDataSetModifiersPrint(dataSetId: c_int) {
+    road_read("crgDataSetModifiersPrint", dataSetId, (), |r| print_settings(r.modifiers(), "modifier"))
+}
+
+// ---------------------------------------------------------------- printing
+
+/// Prints the header values of a data set.
+#[no_mangle]
+pub extern "C" fn crgDataPrintHeader(dataSetId: c_int) {
+    road_read("crgDataPrintHeader", dataSetId, (), |r| {
+        let l = r.reference_line();
+        let g = r.grid();
+        let mut text =
+            format!("crgDataPrintHeader: file <{}>, format {}\n", r.header().path.display(), r.format().name());
+        for (k, v) in [
+            ("uMin", l.u_first),
+            ("xBegin", l.x_first),
+            ("yBegin", l.y_first),
+            ("phiBegin", l.phi_first),
+            ("uMax", l.u_last),
+            ("xEnd", l.x_last),
+            ("yEnd", l.y_last),
+            ("phiEnd", l.phi_last),
+            ("uInc", l.u_inc),
+            ("vMin", g.v_first),
+            ("vMax", g.v_last),
+            ("vInc", g.v_inc),
+        ] {
+            text.push_str(&format!("crgDataPrintHeader: {k:<8} = {v:10.4}\n"));
+        }
+        for (k, v) in &r.header().road.extra {
+            text.push_str(&format!("crgDataPrintHeader: {k} = {v}\n"));
+        }
+        msg::send(msg::NOTICE, text.trim_end());
+    })
+}
+
+/// Prints the channels of a data set.
+#[no_mangle]
+pub extern "C" fn crgDataPrintChannelInfo(dataSetId: c_int) {
+    road_read("crgDataPrintChannelInfo", dataSetId, (), |r| {
+        let h = r.header();
+        let mut text =
+            format!("crgDataPrintChannelInfo: {} channels in format {}\n", h.channels.len(), h.format.name());
+        for (i, c) in h.channels.iter().enumerate() {
+            text.push_str(&format!("    channel {:4}: {c:?}\n", i + 1));
+        }
+        let g = r.grid();
+        text.push_str(&format!("    {} long sections, {} cross sections", g.nv, g.nu));
+        msg::send(msg::NOTICE, &text);
+    })
+}
+
+/// Prints a summary of the road.
+#[no_mangle]
+pub extern "C" fn crgDataPrintRoadInfo(dataSetId: c_int) {
+    road_read("crgDataPrintRoadInfo", dataSetId, (), |r| {
+        let (u0, u1) = r.u_range();
+        let (v0, v1) = r.v_range();
+        let g = r.grid();
+        let mut text = format!(
+            "crgDataPrintRoadInfo: Summary of crg basic information\n    length of road [m]:          {:10.4}\n    cross section increment [m]: {:10.4}\n    number of cross sections:    {}\n    width of road [m]:           {:10.4}\n    width right of refline [m]:  {:10.4}\n    width left of refline [m]:   {:10.4}\n    number of v channels:        {}",
+            u1 - u0,
+            r.increments().0,
+            g.nu,
+            v1 - v0,
+            v0.min(0.0),
+            v1.max(0.0),
+            g.nv
+        );
+        if let Some((a, b)) = r.closed_track() {
+            text.push_str(&format!("\n    reference line can be closed over u = {a:.4} .. {b:.4}"));
+        }
+        msg::send(msg::NOTICE, &text);
+    })
+}
+
+// ---------------------------------------------------------------- messages and memory
+
+/// Sets the message level.
+#[no_mangle]
+pub extern "C" fn crgMsgSetLevel(level: c_int) {
+    msg::set_level(level);
+}
+
+/// Limits the number of messages printed (-1: no limit).
+#[no_mangle]
+pub extern "C" fn crgMsgSetMaxWarnMsgs(maxNo: c_int) {
+    msg::set_max_warnings(maxNo);
+}
+
+/// Kept for compatibility; log messages are not limited separately.
+#[no_mangle]
+pub extern "C" fn crgMsgSetMaxLogMsgs(_maxNo: c_int) {}
+
+/// Whether a message of this level would be printed.
+#[no_mangle]
+pub extern "C" fn crgMsgIsPrintable(level: c_int) -> c_int {
+    c_int::from(msg::is_printable(level))
+}
+
+/// Sends messages to a callback instead of standard output (null restores printing).
+#[no_mangle]
+pub extern "C" fn crgMsgSetCallback(func: Option<unsafe extern "C" fn(level: c_int, message: *mut c_char) -> c_int>) {
+    msg::set_callback(func);
+}
+
+/// Allocates zeroed memory through the library's allocator hook.
+#[no_mangle]
+pub extern "C" fn crgCalloc(nmemb: usize, size: usize) -> *mut c_void {
+    alloc::calloc(nmemb, size)
+}
+
+/// Reallocates memory through the library's allocator hook.
+#[no_mangle]
+pub extern "C" fn crgRealloc(ptr: *mut c_void, size: usize) -> *mut c_void {
+    alloc::realloc(ptr, size)
+}
+
+/// Frees memory through the library's allocator hook.
+#[no_mangle]
+pub extern "C" fn crgFree(ptr: *mut c_void) {
+    alloc::free(ptr)
+}
+
+/// Installs the application's calloc (null restores the C library's).
+#[no_mangle]
+pub extern "C" fn crgCallocSetCallback(func: Option<unsafe extern "C" fn(nmemb: usize, size: usize) -> *mut c_void>) {
+    alloc::set_calloc(func);
+}
+
+/// Installs the application's realloc (null restores the C library's).
+#[no_mangle]
+pub extern "C" fn crgReallocSetCallback(
+    func: Option<unsafe extern "C" fn(ptr: *mut c_void, size: usize) -> *mut c_void>,
+) {
+    alloc::set_realloc(func);
+}
+
+/// Installs the application's free (null restores the C library's).
+#[no_mangle]
+pub extern "C" fn crgFreeSetCallback(func: Option<unsafe extern "C" fn(ptr: *mut c_void)>) {
+    alloc::set_free(func);
+}
+
+/// 1 if the double is NaN (OpenCRG 1.2.0 API).
+#[no_mangle]
+pub extern "C" fn crgIsNan(dValue: *mut f64) -> c_int {
+    // SAFETY: null-checked; the caller passes a pointer to a double.
+    c_int::from(!dValue.is_null() && unsafe { *dValue }.is_nan())
+}
+
+/// 1 if the float is NaN (OpenCRG 1.2.0 API).
+#[no_mangle]
+pub extern "C" fn crgIsNanf(fValue: *mut f32) -> c_int {
+    // SAFETY: null-checked; the caller passes a pointer to a float.
+    c_int::from(!fValue.is_null() && unsafe { *fValue }.is_nan())
+}
+
+// ---------------------------------------------------------------- contact points
+
+/// Creates a contact point on a data set; its id (>= 0) or -1.
+#[no_mangle]
+pub extern "C" fn crgContactPointCreate(dataSetId: c_int) -> c_int {
+    guard("crgContactPointCreate", -1, || {
+        let id = registry::create_cp(dataSetId);
+        if id < 0 {
+            msg::fatal(&format!("crgContactPointCreate: invalid data set id <{dataSetId}>"));
+        }
+        id
+    })
+}
+
+/// Deletes a contact point.
+#[no_mangle]
+pub extern "C" fn crgContactPointDelete(cpId: c_int) -> c_int {
+    guard("crgContactPointDelete", 0, || c_int::from(registry::delete_cp(cpId)))
+}
+
+/// Deletes every contact point of a data set (-1: of every data set).
+#[no_mangle]
+pub extern "C" fn crgContactPointDeleteAll(dataSetId: c_int) {
+    guard("crgContactPointDeleteAll", (), || registry::delete_cps_of((dataSetId != -1).then_some(dataSetId)))
+}
+
+fn option_kind_ok(id: c_uint, kind: Kind) -> bool {
+    describe(id) == Some((Family::Option, kind))
+}
+
+/// Sets an integer option of a contact point.
+#[no_mangle]
+pub extern "C" fn crgContactPointOptionSetInt(cpId: c_int, optionId: c_uint, optionValue: c_int) -> c_int {
+    cp_call("crgContactPointOptionSetInt", cpId, 0, |cp| {
+        ok(cp.point.set_option_int(optionId, optionValue), "crgContactPointOptionSetInt")
+    })
+}
+
+/// Sets a double option of a contact point.
+#[no_mangle]
+pub extern "C" fn crgContactPointOptionSetDouble(cpId: c_int, optionId: c_uint, optionValue: f64) -> c_int {
+    cp_call("crgContactPointOptionSetDouble", cpId, 0, |cp| {
+        if !option_kind_ok(optionId, Kind::Double) {
+            msg::warn(&format!("crgContactPointOptionSetDouble: <{}> is not a double option", name(optionId)));
+            return 0;
+        }
+        ok(cp.point.set_option_double(optionId, optionValue), "crgContactPointOptionSetDouble")
+    })
+}
+
+/// Reads an integer option of a contact point.
+#[no_mangle]
+pub extern "C" fn crgContactPointOptionGetInt(cpId: c_int, optionId: c_uint, optionValue: *mut c_int) -> c_int {
+    cp_call("crgContactPointOptionGetInt", cpId, 0, |cp| get_int(cp.point.options(), optionId, optionValue))
+}
+
+/// Reads a double option of a contact point.
+#[no_mangle]
+pub extern "C" fn crgContactPointOptionGetDouble(cpId: c_int, optionId: c_uint, optionValue: *mut f64) -> c_int {
+    cp_call("crgContactPointOptionGetDouble", cpId, 0, |cp| get_double(cp.point.options(), optionId, optionValue))
+}
+
+/// Removes one option of a contact point.
+#[no_mangle]
+pub extern "C" fn crgContactPointOptionRemove(cpId: c_int, optionId: c_uint) -> c_int {
+    cp_call("crgContactPointOptionRemove", cpId, 0, |cp| c_int::from(cp.point.remove_option(optionId)))
+}
+
+/// Removes every option of a contact point.
+#[no_mangle]
+pub extern "C" fn crgContactPointOptionRemoveAll(cpId: c_int) -> c_int {
+    cp_call("crgContactPointOptionRemoveAll", cpId, 0, |cp| {
+        cp.point.clear_options();
+        1
+    })
+}
+
+/// Prints the options of a contact point.
+#[no_mangle]
+pub extern "C" fn crgContactPointOptionsPrint(cpId: c_int) {
+    cp_call("crgContactPointOptionsPrint", cpId, (), |cp| print_settings(cp.point.options(), "option"))
+}
+
+/// Restores the default options of a contact point.
+#[no_mangle]
+pub extern "C" fn crgContactPointSetDefaultOptions(cpId: c_int) {
+    cp_call("crgContactPointSetDefaultOptions", cpId, (), |cp| cp.point.reset_options())
+}
+
+/// Sets the size of a contact point's search history.
+#[no_mangle]
+pub extern "C" fn crgContactPointSetHistory(cpId: c_int, histSize: c_int) -> c_int {
+    cp_call("crgContactPointSetHistory", cpId, 0, |cp| match usize::try_from(histSize) {
+        Ok(n) => {
+            cp.point.set_history(n);
+            1
+        }
+        Err(_) => 0,
+    })
+}
+
+/// Sets the size of every contact point's search history.
+#[no_mangle]
+pub extern "C" fn crgContactPointSetHistoryForAllPoints(histSize: c_int) {
+    guard("crgContactPointSetHistoryForAllPoints", (), || {
+        if let Ok(n) = usize::try_from(histSize) {
+            registry::update_all_cps(|cp| cp.point.set_history(n));
+        }
+    })
+}
+
+// ---------------------------------------------------------------- evaluation
+
+fn eval2(
+    func: &str,
+    cp_id: c_int,
+    a: *mut f64,
+    b: *mut f64,
+    f: impl FnOnce(&mut Cp) -> opencrg::Result<(f64, f64)>,
+) -> c_int {
+    if a.is_null() || b.is_null() {
+        return 0;
+    }
+    cp_call(func, cp_id, 0, |cp| match f(cp) {
+        Ok((x, y)) => {
+            put(a, x);
+            put(b, y);
+            1
+        }
+        Err(_) => 0,
+    })
+}
+
+fn eval1(func: &str, cp_id: c_int, out: *mut f64, f: impl FnOnce(&mut Cp) -> opencrg::Result<f64>) -> c_int {
+    if out.is_null() {
+        return 0;
+    }
+    cp_call(func, cp_id, 0, |cp| match f(cp) {
+        Ok(z) => {
+            put(out, z);
+            1
+        }
+        Err(_) => {
+            put(out, 0.0);
+            0
+        }
+    })
+}
+
+/// x/y to u/v.
+#[no_mangle]
+pub extern "C" fn crgEvalxy2uv(cpId: c_int, x: f64, y: f64, u: *mut f64, v: *mut f64) -> c_int {
+    eval2("crgEvalxy2uv", cpId, u, v, |cp| cp.point.xy_to_uv(x, y))
+}
+
+/// u/v to x/y.
+#[no_mangle]
+pub extern "C" fn crgEvaluv2xy(cpId: c_int, u: f64, v: f64, x: *mut f64, y: *mut f64) -> c_int {
+    eval2("crgEvaluv2xy", cpId, x, y, |cp| cp.point.uv_to_xy(u, v))
+}
+
+/// u/v to z.
+#[no_mangle]
+pub extern "C" fn crgEvaluv2z(cpId: c_int, u: f64, v: f64, z: *mut f64) -> c_int {
+    eval1("crgEvaluv2z", cpId, z, |cp| cp.point.uv_to_z(u, v))
+}
+
+/// x/y to z.
+#[no_mangle]
+pub extern "C" fn crgEvalxy2z(cpId: c_int, x: f64, y: f64, z: *mut f64) -> c_int {
+    eval1("crgEvalxy2z", cpId, z, |cp| cp.point.xy_to_z(x, y))
+}
+
+/// u/v to heading and curvature.
+#[no_mangle]
+pub extern "C" fn crgEvaluv2pk(cpId: c_int, u: f64, v: f64, phi: *mut f64, curv: *mut f64) -> c_int {
+    eval2("crgEvaluv2pk", cpId, phi, curv, |cp| cp.point.uv_to_pk(u, v))
+}
+
+/// x/y to heading and curvature.
+#[no_mangle]
+pub extern "C" fn crgEvalxy2pk(cpId: c_int, x: f64, y: f64, phi: *mut f64, curv: *mut f64) -> c_int {
+    eval2("crgEvalxy2pk", cpId, phi, curv, |cp| cp.point.xy_to_pk(x, y))
+}

@@ -1,0 +1,113 @@
+//! Messages: level, warning budget and the application's callback.
+//!
+//! The library's own messages and the application's `crgMsgPrint` calls go the same
+//! way: formatted in the C shim, routed here.
+
+use crate::panic::lock;
+use std::ffi::{c_char, c_int, CString};
+use std::sync::atomic::{AtomicI32, Ordering};
+use std::sync::Mutex;
+
+/// Message levels of the classic API.
+pub const NONE: c_int = 0;
+/// Fatal errors.
+pub const FATAL: c_int = 1;
+/// Warnings.
+pub const WARN: c_int = 2;
+/// Notices.
+pub const NOTICE: c_int = 3;
+/// Information.
+pub const INFO: c_int = 4;
+/// Debugging.
+pub const DEBUG: c_int = 5;
+
+/// The callback type of `crgMsgSetCallback`.
+pub type Callback = unsafe extern "C" fn(c_int, *mut c_char) -> c_int;
+
+static LEVEL: AtomicI32 = AtomicI32::new(NOTICE);
+static WARN_BUDGET: AtomicI32 = AtomicI32::new(-1);
+static CALLBACK: Mutex<Option<Callback>> = Mutex::new(None);
+
+extern "C" {
+    fn crgMsgPrint(level: c_int, format: *const c_char, ...);
+}
+
+pub fn set_level(level: c_int) {
+    if (NONE..=DEBUG).contains(&level) {
+        LEVEL.store(level, Ordering::Relaxed);
+    }
+}
+
+pub fn level() -> c_int {
+    LEVEL.load(Ordering::Relaxed)
+}
+
+pub fn set_max_warnings(n: c_int) {
+    WARN_BUDGET.store(n, Ordering::Relaxed);
+}
+
+pub fn is_printable(level: c_int) -> bool {
+    level <= self::level() && WARN_BUDGET.load(Ordering::Relaxed) != 0
+}
+
+pub fn set_callback(cb: Option<Callback>) {
+    *lock(&CALLBACK) = cb;
+}
+
+/// Sends one of the library's own messages (a newline is added).
+pub fn send(level: c_int, text: &str) {
+    if level > self::level() {
+        return;
+    }
+    let text = CString::new(format!("{text}\n").replace('\0', " ")).unwrap_or_default();
+    // SAFETY: "%s" with one NUL-terminated string argument.
+    unsafe { crgMsgPrint(level, c"%s".as_ptr(), text.as_ptr()) }
+}
+
+/// A fatal message.
+pub fn fatal(text: &str) {
+    send(FATAL, text);
+}
+
+/// A warning.
+pub fn warn(text: &str) {
+    send(WARN, text);
+}
+
+#[no_mangle]
+extern "C" fn opencrg_msg_wanted(level: c_int) -> c_int {
+    c_int::from(level <= self::level())
+}
+
+#[no_mangle]
+extern "C" fn opencrg_msg_route(level: c_int, text: *mut c_char) -> c_int {
+    let cb = *lock(&CALLBACK);
+    if let Some(cb) = cb {
+        // SAFETY: the application registered this callback for exactly this use;
+        // `text` is the shim's NUL-terminated buffer.
+        unsafe { cb(level, text) };
+        return 0;
+    }
+    let budget = WARN_BUDGET.load(Ordering::Relaxed);
+    if budget == 0 {
+        return 0;
+    }
+    if budget > 0 {
+        WARN_BUDGET.store(budget - 1, Ordering::Relaxed);
+    }
+    1
+}
+
+#[no_mangle]
+extern "C" fn opencrg_msg_level_name(level: c_int) -> *const c_char {
+    match level {
+        NONE => c"NONE",
+        FATAL => c"FATAL",
+        WARN => c"WARNING",
+        NOTICE => c"NOTICE",
+        INFO => c"INFO",
+        DEBUG => c"DEBUG",
+        _ => c"unknown level",
+    }
+    .as_ptr()
+}

@@ -1,0 +1,148 @@
+//! Contact points: a road, a set of options and a search history.
+
+use crate::error::{Error, Result};
+use crate::eval;
+use crate::road::Road;
+use crate::search::{self, History, DEFAULT_HISTORY};
+use crate::settings::{opt, Settings};
+use std::sync::Arc;
+
+/// Close and far search distances a new contact point starts with.
+const DEFAULT_CLOSE: f64 = 0.3;
+const DEFAULT_FAR: f64 = 2.2;
+
+/// Evaluates a road with its own options and x/y search history.
+///
+/// Contact points are cheap; give each thread (or each wheel) its own. The road is
+/// shared and never changed by evaluation.
+#[derive(Debug, Clone)]
+pub struct ContactPoint {
+    road: Arc<Road>,
+    options: Settings,
+    history: History,
+}
+
+fn finite(a: f64, b: f64) -> Result<()> {
+    if a.is_nan() || b.is_nan() {
+        Err(Error::Eval("NaN input"))
+    } else {
+        Ok(())
+    }
+}
+
+impl ContactPoint {
+    /// A contact point on `road`, starting with the road's default options.
+    pub fn new(road: Arc<Road>) -> Self {
+        let options = road.options().clone();
+        let history = History::new(DEFAULT_HISTORY, DEFAULT_CLOSE * DEFAULT_CLOSE, DEFAULT_FAR * DEFAULT_FAR);
+        ContactPoint { road, options, history }
+    }
+
+    /// The road evaluated.
+    pub fn road(&self) -> &Arc<Road> {
+        &self.road
+    }
+
+    /// Evaluates another road (for example the same data after modifiers were
+    /// applied); options and history are kept.
+    pub fn set_road(&mut self, road: Arc<Road>) {
+        self.road = road;
+    }
+
+    /// The options in force.
+    pub fn options(&self) -> &Settings {
+        &self.options
+    }
+
+    /// Sets an integer option.
+    pub fn set_option_int(&mut self, id: u32, value: i32) -> Result<()> {
+        Ok(self.options.set_int(id, value)?)
+    }
+
+    /// Sets a double option. The search options act at once: `REFLINE_SEARCH_U` and
+    /// `REFLINE_SEARCH_U_FRAC` preload the history, the close and far distances
+    /// change the history's criteria.
+    pub fn set_option_double(&mut self, id: u32, value: f64) -> Result<()> {
+        let line = &self.road.line;
+        match id {
+            opt::REFLINE_SEARCH_U => self.history.preload(line, value),
+            opt::REFLINE_SEARCH_U_FRAC if (0.0..=1.0).contains(&value) => {
+                self.history.preload(line, line.u_first + value * (line.u_last - line.u_first))
+            }
+            opt::REFLINE_CLOSE => self.history.set_close(value),
+            opt::REFLINE_FAR => self.history.set_far(value),
+            _ => {}
+        }
+        Ok(self.options.set_double(id, value)?)
+    }
+
+    /// Removes one option (the evaluation then behaves as with the option absent).
+    pub fn remove_option(&mut self, id: u32) -> bool {
+        self.options.remove(id)
+    }
+
+    /// Removes every option.
+    pub fn clear_options(&mut self) {
+        self.options.clear();
+    }
+
+    /// Restores the library's default options and search distances.
+    pub fn reset_options(&mut self) {
+        self.options.reset_options();
+        let _ = self.set_option_double(opt::REFLINE_CLOSE, DEFAULT_CLOSE);
+        let _ = self.set_option_double(opt::REFLINE_FAR, DEFAULT_FAR);
+    }
+
+    /// Gives the history `size` entries and resets the close and far distances to
+    /// 10 and 100 u increments (as the reference does).
+    pub fn set_history(&mut self, size: usize) {
+        self.history.resize(size);
+        if size > 0 {
+            let inc = self.road.line.u_inc;
+            let close2 = 100.0 * inc * inc;
+            self.history.set_distances2(close2, 100.0 * close2);
+        }
+    }
+
+    /// Number of history entries.
+    pub fn history_size(&self) -> usize {
+        self.history.capacity()
+    }
+
+    /// x/y of (u, v).
+    pub fn uv_to_xy(&self, u: f64, v: f64) -> Result<(f64, f64)> {
+        finite(u, v)?;
+        Ok(eval::uv_to_xy(&self.road, &self.options, u, v))
+    }
+
+    /// Elevation at (u, v); an error where a border mode of none refuses.
+    pub fn uv_to_z(&self, u: f64, v: f64) -> Result<f64> {
+        finite(u, v)?;
+        eval::uv_to_z(&self.road, &self.options, u, v).ok_or(Error::Eval("outside the road with border mode none"))
+    }
+
+    /// Heading and curvature at (u, v).
+    pub fn uv_to_pk(&self, u: f64, v: f64) -> Result<(f64, f64)> {
+        finite(u, v)?;
+        Ok(eval::uv_to_pk(&self.road, &self.options, u, v))
+    }
+
+    /// (u, v) of the point (x, y).
+    pub fn xy_to_uv(&mut self, x: f64, y: f64) -> Result<(f64, f64)> {
+        finite(x, y)?;
+        let road = &*self.road;
+        Ok(search::xy_to_uv(&road.line, &road.index, &self.options, &mut self.history, x, y))
+    }
+
+    /// Elevation at the point (x, y).
+    pub fn xy_to_z(&mut self, x: f64, y: f64) -> Result<f64> {
+        let (u, v) = self.xy_to_uv(x, y)?;
+        self.uv_to_z(u, v)
+    }
+
+    /// Heading and curvature at the point (x, y).
+    pub fn xy_to_pk(&mut self, x: f64, y: f64) -> Result<(f64, f64)> {
+        let (u, v) = self.xy_to_uv(x, y)?;
+        self.uv_to_pk(u, v)
+    }
+}

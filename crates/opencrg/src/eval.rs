@@ -1,0 +1,376 @@
+//! Evaluation at a (u, v) position: x/y, elevation z, heading and curvature.
+//!
+//! These functions take the road and a set of options; [`ContactPoint`](crate::ContactPoint)
+//! wraps them with its own options and search history.
+
+use crate::grid::VLayout;
+use crate::refline::RefLine;
+use crate::road::Road;
+use crate::settings::{opt, Settings};
+
+/// Border mode values as stored in the options (raw integers, since an application may
+/// set any integer).
+const NONE: i32 = 0;
+const EX_ZERO: i32 = 1;
+const EX_KEEP: i32 = 2;
+const REPEAT: i32 = 3;
+const REFLECT: i32 = 4;
+
+/// Tolerance within which a v just outside an uneven grid counts as on its border.
+const V_BORDER_SNAP: f64 = 1e-8;
+
+/// Maps u into the closed-track range when the line can be closed and the option
+/// `REFLINE_CONTINUATION` asks for it.
+#[inline]
+pub(crate) fn wrap_closed_u(line: &RefLine, options: &Settings, u: f64) -> f64 {
+    if let Some((min, max)) = line.closed {
+        if (u < min || u > max) && options.has_int(opt::REFLINE_CONTINUE, 1) {
+            let w = (u - min) % (max - min);
+            return if w > 0.0 { w + min } else { w + max };
+        }
+    }
+    u
+}
+
+/// x/y of the point at (u, v). Beyond the ends the line continues straight along
+/// the end headings; inside, v is measured along normals blended between the
+/// neighbouring segments.
+pub fn uv_to_xy(road: &Road, options: &Settings, u: f64, v: f64) -> (f64, f64) {
+    let l = &road.line;
+    let u = wrap_closed_u(l, options, u);
+    let (i, frac) = l.interval(u);
+    let t = &l.trig;
+    if frac < 0.0 {
+        let du = frac * l.u_inc;
+        return (l.x_first + du * t.first_cos - v * t.first_sin, l.y_first + du * t.first_sin + v * t.first_cos);
+    }
+    if frac > 1.0 {
+        let du = (frac - 1.0) * l.u_inc;
+        return (l.x_last + du * t.last_cos - v * t.last_sin, l.y_last + du * t.last_sin + v * t.last_cos);
+    }
+    let (xs, ys) = (&l.x, &l.y);
+    let p1 = (xs[i], ys[i]);
+    let p2 = (xs[i + 1], ys[i + 1]);
+    let n12 = normalized(-(p2.1 - p1.1), p2.0 - p1.0);
+    let n1 = if i > 0 { normalized(-(p2.1 - ys[i - 1]), p2.0 - xs[i - 1]) } else { n12 };
+    let n2 = if i + 2 < l.n { normalized(-(ys[i + 2] - p1.1), xs[i + 2] - p1.0) } else { n12 };
+    let n1 = stretch(n1, n12);
+    let n2 = stretch(n2, n12);
+    let a = (p1.0 + v * n1.0, p1.1 + v * n1.1);
+    let b = (p2.0 + v * n2.0, p2.1 + v * n2.1);
+    (a.0 + frac * (b.0 - a.0), a.1 + frac * (b.1 - a.1))
+}
+
+#[inline]
+fn normalized(x: f64, y: f64) -> (f64, f64) {
+    let len = (x * x + y * y).sqrt();
+    if len < 1e-10 {
+        (x, y)
+    } else {
+        (x / len, y / len)
+    }
+}
+
+/// Scales a point normal so its component along the segment normal is 1.
+#[inline]
+fn stretch(n: (f64, f64), n12: (f64, f64)) -> (f64, f64) {
+    let dot = n.0 * n12.0 + n.1 * n12.1;
+    if dot.abs() > 1e-10 {
+        (n.0 / dot, n.1 / dot)
+    } else {
+        n
+    }
+}
+
+/// Where a coordinate lies after the border mode is applied.
+struct Axis {
+    index: usize,
+    frac: f64,
+    in_core: bool,
+    mode: i32,
+}
+
+/// Resolves u against the border mode; `None` when the mode refuses.
+/// Returns the axis, the possibly moved u, whether grid values and banking count,
+/// which end the smoothing base comes from, and the border offset.
+#[inline]
+fn resolve_u(l: &RefLine, options: &Settings, mut u: f64) -> Option<(Axis, f64, bool, u8, f64)> {
+    let mut frac = (u - l.u_first) / l.u_inc;
+    let mut mode = NONE;
+    let mut in_core = true;
+    let mut with_values = true;
+    let mut smooth_end = 0u8;
+    let mut offset = 0.0;
+    let mut index_from_frac = true;
+    if u < l.u_first || u > l.u_last {
+        in_core = false;
+        mode = options.get_int(opt::BORDER_MODE_U).unwrap_or(NONE);
+        let size = l.u_last - l.u_first;
+        let max_frac = size / l.u_inc;
+        match mode {
+            NONE => return None,
+            EX_KEEP => {
+                if frac < 0.0 {
+                    frac = 0.0;
+                    index_from_frac = false;
+                    smooth_end = 1;
+                } else {
+                    smooth_end = 2;
+                }
+            }
+            EX_ZERO => {
+                with_values = false;
+                smooth_end = if frac < 0.0 { 1 } else { 2 };
+            }
+            REPEAT => {
+                frac = ((u - l.u_first) / l.u_inc) % max_frac;
+                if frac < 0.0 {
+                    frac += max_frac;
+                }
+                in_core = true;
+                u = l.u_first + frac * l.u_inc;
+            }
+            REFLECT => {
+                let (f, moved) = reflect(frac, (u - l.u_first) / size, max_frac);
+                frac = f;
+                in_core = true;
+                u = l.u_first + moved * l.u_inc;
+            }
+            _ => {}
+        }
+        offset = options.get_double(opt::BORDER_OFFSET_U).unwrap_or(0.0);
+    }
+    let index = if index_from_frac { clamp_index(&mut frac, l.n) } else { 0 };
+    Some((Axis { index, frac, in_core, mode }, u, with_values, smooth_end, offset))
+}
+
+/// Reflects a grid fraction into the data; returns the fraction (twice, for the
+/// index and for the moved coordinate).
+#[inline]
+fn reflect(frac: f64, periods: f64, max_frac: f64) -> (f64, f64) {
+    let rep = (periods as i32).unsigned_abs();
+    let mut f = frac.abs() - f64::from(rep) * max_frac;
+    if rep % 2 == 1 {
+        f = max_frac - f;
+    }
+    (f, f)
+}
+
+/// Splits a non-negative grid fraction into an interval index (at most `n - 2`) and
+/// the fraction within it.
+#[inline]
+fn clamp_index(frac: &mut f64, n: usize) -> usize {
+    if *frac < 0.0 {
+        *frac = 0.0;
+    }
+    let i = *frac as usize;
+    if i >= n - 1 {
+        *frac = 1.0;
+        n - 2
+    } else {
+        *frac -= i as f64;
+        i
+    }
+}
+
+/// Elevation at (u, v) with the given options; `None` when a border mode refuses.
+pub fn uv_to_z(road: &Road, options: &Settings, u: f64, v: f64) -> Option<f64> {
+    let l = &road.line;
+    let g = &road.grid;
+    let u = wrap_closed_u(l, options, u);
+    let (ua, u, mut with_values, mut smooth_end, mut z_offset) = resolve_u(l, options, u)?;
+    let with_bank = with_values;
+    let mut v = v;
+
+    let mut v_in_core = true;
+    let mut v_mode = EX_KEEP;
+    let (iv, fv);
+    match g.layout {
+        VLayout::Indexed => {
+            let mut frac = (v - g.v_first) / g.v_inc;
+            let mut index_from_frac = true;
+            if v < g.v_first || v > g.v_last {
+                v_in_core = false;
+                v_mode = options.get_int(opt::BORDER_MODE_V).unwrap_or(EX_KEEP);
+                let size = g.v_last - g.v_first;
+                let max_frac = size / g.v_inc;
+                match v_mode {
+                    NONE => return None,
+                    EX_KEEP if frac < 0.0 => {
+                        frac = 0.0;
+                        index_from_frac = false;
+                    }
+                    EX_ZERO => with_values = false,
+                    REPEAT => {
+                        frac = ((v - g.v_first) / g.v_inc) % max_frac;
+                        if frac < 0.0 {
+                            frac += max_frac;
+                        }
+                        v_in_core = true;
+                        v = g.v_first + frac * g.v_inc;
+                    }
+                    REFLECT => {
+                        let (f, moved) = reflect(frac, (v - g.v_first) / size, max_frac);
+                        frac = f;
+                        v_in_core = true;
+                        v = g.v_first + moved * g.v_inc;
+                    }
+                    _ => {}
+                }
+                z_offset += options.get_double(opt::BORDER_OFFSET_V).unwrap_or(0.0);
+            }
+            iv = if index_from_frac { clamp_index(&mut frac, g.nv) } else { 0 };
+            fv = frac;
+        }
+        VLayout::Explicit => {
+            let mut pos = v;
+            if pos < g.v_first || pos > g.v_last {
+                v_in_core = false;
+                if (pos - g.v_first).abs() < V_BORDER_SNAP {
+                    pos = g.v_first;
+                } else if (pos - g.v_last).abs() < V_BORDER_SNAP {
+                    pos = g.v_last;
+                } else {
+                    v_mode = options.get_int(opt::BORDER_MODE_V).unwrap_or(EX_KEEP);
+                    match v_mode {
+                        NONE => return None,
+                        EX_ZERO => with_values = false,
+                        _ => {}
+                    }
+                }
+                let range = g.v_last - g.v_first;
+                if v_mode == REPEAT {
+                    if pos > g.v_last {
+                        pos = g.v_first + (pos - g.v_last) % range;
+                    } else if pos < g.v_first {
+                        pos = g.v_last + (pos - g.v_first) % range;
+                    }
+                    v_in_core = true;
+                    if (pos - g.v_first).abs() < V_BORDER_SNAP {
+                        pos = g.v_first;
+                    } else if (pos - g.v_last).abs() < V_BORDER_SNAP {
+                        pos = g.v_last;
+                    }
+                } else if v_mode == REFLECT {
+                    if pos > g.v_last {
+                        let rem = (pos - g.v_last) % range;
+                        let rep = (((pos - g.v_last) / range) as i32).unsigned_abs();
+                        pos = if rep.is_multiple_of(2) { g.v_last - rem } else { g.v_first + rem };
+                    } else if pos < g.v_first {
+                        let rem = (pos - g.v_first) % range;
+                        let rep = (((pos - g.v_first) / range) as i32).unsigned_abs();
+                        pos = if rep % 2 == 1 { g.v_last + rem } else { g.v_first - rem };
+                    }
+                    v_in_core = true;
+                }
+                z_offset += options.get_double(opt::BORDER_OFFSET_V).unwrap_or(0.0);
+            }
+            let i = g.v_interval(pos);
+            iv = i;
+            fv = ((pos - g.v[i]) / (g.v[i + 1] - g.v[i])).clamp(0.0, 1.0);
+        }
+    }
+
+    let iu = ua.index;
+    let mut fu = ua.frac;
+    let mut z = 0.0;
+    if with_values {
+        let z00 = f64::from(g.at(iu, iv));
+        let z10 = f64::from(g.at(iu + 1, iv)) - z00;
+        let mut z01 = f64::from(g.at(iu, iv + 1));
+        let z11 = f64::from(g.at(iu + 1, iv + 1)) - (z10 + z01);
+        z01 -= z00;
+        z = (z11 * fv + z10) * fu + z01 * fv + z00;
+        z += g.mean;
+    }
+
+    let mut smooth = None;
+    let begin = options.get_double(opt::SMOOTH_U_BEGIN);
+    let end = options.get_double(opt::SMOOTH_U_END);
+    let mut smooth_base = 0.0;
+    if begin.is_some() || end.is_some() {
+        if ua.in_core || smooth_end != 0 {
+            if let Some(zone) = begin {
+                if u - l.u_first <= zone {
+                    smooth = Some(if u < l.u_first { 0.0 } else { (u - l.u_first) / zone });
+                    smooth_end = 1;
+                }
+            }
+            if let Some(zone) = end {
+                if l.u_last - u <= zone {
+                    smooth = Some(if u > l.u_last { 0.0 } else { (l.u_last - u) / zone });
+                    smooth_end = 2;
+                }
+            }
+        }
+        smooth_base = match (smooth_end, &l.z) {
+            (1, Some(rz)) => rz[0],
+            (1, None) => l.z_first,
+            (2, Some(rz)) => rz[l.n - 1],
+            (2, None) => l.z_last,
+            _ => 0.0,
+        };
+    }
+
+    fu = fu.clamp(0.0, 1.0);
+    z += match &l.z {
+        Some(rz) => rz[iu] + fu * (rz[iu + 1] - rz[iu]),
+        None => l.z_first,
+    };
+    if l.has_bank && with_bank {
+        let bank = match &l.bank {
+            Some(b) => b[iu] + fu * (b[iu + 1] - b[iu]),
+            None => l.bank_first,
+        };
+        let vb = if v < g.v_first {
+            g.v_first
+        } else if v > g.v_last {
+            g.v_last
+        } else {
+            v
+        };
+        z += bank * vb;
+    }
+
+    if !ua.in_core {
+        match ua.mode {
+            EX_ZERO => z = z_offset,
+            EX_KEEP => z += z_offset,
+            _ => {}
+        }
+    } else if !v_in_core {
+        match v_mode {
+            EX_ZERO => z = z_offset,
+            EX_KEEP => z += z_offset,
+            _ => {}
+        }
+    }
+    if let Some(scale) = smooth {
+        z = smooth_base + (z - smooth_base) * scale;
+    }
+    Some(z)
+}
+
+/// Heading and curvature at (u, v). The heading is that of the reference line
+/// segment holding u; the curvature comes from points 0.5 m apart (at least one
+/// increment) and, in lateral curvature mode, is that of the parallel at v.
+pub fn uv_to_pk(road: &Road, options: &Settings, u: f64, v: f64) -> (f64, f64) {
+    let l = &road.line;
+    let u = wrap_closed_u(l, options, u);
+    let (iu, _) = l.interval(u);
+    let nu = ((0.5 / l.u_inc) as usize).max(1);
+    let phi_len = l.phi.as_ref().map_or(0, Vec::len);
+    if nu > iu {
+        return (l.phi_first, 0.0);
+    }
+    if iu + nu >= phi_len {
+        return (l.phi_last, 0.0);
+    }
+    let mut curv = l.curvature_at(iu, nu);
+    if options.has_int(opt::CURV_MODE, 0) && curv.abs() > 1e-10 {
+        let radius = 1.0 / curv - v;
+        curv = if radius.abs() < 1e-6 { 1e6 } else { 1.0 / radius };
+    }
+    let phi = l.phi.as_ref().map_or(l.phi_last, |p| p[iu + 1]);
+    (phi, curv)
+}

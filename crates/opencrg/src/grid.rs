@@ -1,0 +1,163 @@
+//! The elevation grid: single-precision z values over (u index, v index), with the
+//! positions of the long sections.
+
+use crate::settings::NanMode;
+
+/// How the v positions of the long sections were defined.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum VLayout {
+    /// `D:long section N`: a regular grid from the header's right border and increment.
+    Indexed,
+    /// `D:long section at v = X`: explicit positions, evaluated by search.
+    Explicit,
+}
+
+/// Elevation grid stored cross section by cross section (`z[iu * nv + iv]`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Grid {
+    /// Number of cross sections (u samples).
+    pub nu: usize,
+    /// Number of long sections (v samples).
+    pub nv: usize,
+    /// z values, NaN where the file has none.
+    pub z: Vec<f32>,
+    /// Offset added to every z value (changed by scaling and relocation).
+    pub mean: f64,
+    /// v positions of the long sections, increasing.
+    pub v: Vec<f64>,
+    /// The v range used for border decisions (header values, as the reference keeps them).
+    pub v_first: f64,
+    /// Upper end of the v range used for border decisions.
+    pub v_last: f64,
+    /// v increment (0 when the long sections are not evenly spaced).
+    pub v_inc: f64,
+    /// How the v positions were defined.
+    pub layout: VLayout,
+}
+
+impl Grid {
+    /// The z value at (u index, v index).
+    #[inline]
+    pub fn at(&self, iu: usize, iv: usize) -> f32 {
+        self.z[iu * self.nv + iv]
+    }
+
+    /// Index of the v interval holding `v`: the largest `i <= nv - 2` with `v[i] <= v`, or 0.
+    #[inline]
+    pub fn v_interval(&self, v: f64) -> usize {
+        let n = self.v[..self.nv - 1].partition_point(|&x| x <= v);
+        n.saturating_sub(1)
+    }
+
+    /// Folds the mean offset into the stored values (as the reference does when it
+    /// prepares the data again).
+    pub fn fold_mean(&mut self) {
+        if self.mean != 0.0 {
+            let add = self.mean as f32;
+            for z in self.z.iter_mut().filter(|z| !z.is_nan()) {
+                *z += add;
+            }
+            self.mean = 0.0;
+        }
+    }
+
+    /// Multiplies every value (and the mean offset) by `factor`.
+    pub fn scale(&mut self, factor: f64) {
+        let f = factor as f32;
+        for z in self.z.iter_mut() {
+            *z *= f;
+        }
+        self.mean *= factor;
+    }
+
+    /// Replaces NaNs at the borders of every cross section; returns how many were found.
+    ///
+    /// Scanning from the right border leftwards, a NaN takes its right neighbour's
+    /// value (or `offset` for [`NanMode::SetZero`]); the first value copied in a
+    /// pass gets `offset` added. Then the same from the left border rightwards.
+    pub fn fill_nans(&mut self, mode: NanMode, offset: f64) -> usize {
+        let nv = self.nv;
+        let off = offset as f32;
+        let mut total = 0;
+        let mut offset_applied = false;
+        for row in self.z.chunks_exact_mut(nv) {
+            let mut found = 0;
+            for v in 1..nv {
+                if row[v].is_nan() {
+                    found += 1;
+                    match mode {
+                        NanMode::SetZero => row[v] = off,
+                        NanMode::KeepLast => {
+                            row[v] = row[v - 1];
+                            if !row[v].is_nan() && !offset_applied {
+                                row[v] += off;
+                                offset_applied = true;
+                            }
+                        }
+                        NanMode::Keep => {}
+                    }
+                }
+            }
+            offset_applied = false;
+            for v in (1..nv).rev() {
+                if row[v - 1].is_nan() && !row[v].is_nan() {
+                    found += 1;
+                    match mode {
+                        NanMode::SetZero => row[v - 1] = off,
+                        NanMode::KeepLast => {
+                            row[v - 1] = row[v];
+                            if !offset_applied {
+                                row[v - 1] += off;
+                                offset_applied = true;
+                            }
+                        }
+                        NanMode::Keep => {}
+                    }
+                }
+            }
+            total += found;
+        }
+        total
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn grid(z: Vec<f32>, nv: usize) -> Grid {
+        let nu = z.len() / nv;
+        Grid {
+            nu,
+            nv,
+            z,
+            mean: 0.0,
+            v: (0..nv).map(|i| i as f64).collect(),
+            v_first: 0.0,
+            v_last: (nv - 1) as f64,
+            v_inc: 1.0,
+            layout: VLayout::Indexed,
+        }
+    }
+
+    #[test]
+    fn nan_borders_take_the_last_value() {
+        let n = f32::NAN;
+        let mut g = grid(vec![n, n, 1.0, 2.0, n], 5);
+        assert_eq!(g.fill_nans(NanMode::KeepLast, 0.0), 4, "both passes count");
+        assert_eq!(g.z, vec![1.0, 1.0, 1.0, 2.0, 2.0]);
+        let mut g = grid(vec![n, 1.0, n], 3);
+        g.fill_nans(NanMode::SetZero, 5.0);
+        assert_eq!(g.z, vec![5.0, 1.0, 5.0]);
+    }
+
+    #[test]
+    fn v_interval_search() {
+        let g = grid(vec![0.0; 4], 4);
+        assert_eq!(g.v_interval(-1.0), 0);
+        assert_eq!(g.v_interval(0.0), 0);
+        assert_eq!(g.v_interval(1.5), 1);
+        assert_eq!(g.v_interval(3.0), 2);
+        assert_eq!(g.v_interval(9.0), 2);
+    }
+}

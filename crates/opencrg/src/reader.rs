@@ -1,0 +1,574 @@
+//! Reading CRG files: sections, file references, options and modifiers from the
+//! header, and the location of the data section.
+//!
+//! A `$ROAD_CRG_FILE` section names another CRG file that is read into the same road,
+//! as if its lines stood where the section ends. Options and modifiers of the top file
+//! always win; of the referenced files, the first that defines a section is used.
+
+use crate::error::{Error, Location, Result};
+use crate::header::{self, key_value, lookup, parse_f64_prefix, parse_i32_prefix, Channel, DataFormat, Section, Tag};
+use crate::settings::{m, opt, Settings};
+use std::path::{Path, PathBuf};
+
+/// Deepest chain of file references followed.
+pub const MAX_REFERENCE_DEPTH: usize = 16;
+
+/// The `$ROAD_CRG` parameters as written in the file (`None` where absent).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct RoadParams {
+    /// `REFERENCE_LINE_START_U`.
+    pub start_u: Option<f64>,
+    /// `REFERENCE_LINE_END_U`.
+    pub end_u: Option<f64>,
+    /// `REFERENCE_LINE_START_X`.
+    pub start_x: Option<f64>,
+    /// `REFERENCE_LINE_START_Y`.
+    pub start_y: Option<f64>,
+    /// `REFERENCE_LINE_START_Z`.
+    pub start_z: Option<f64>,
+    /// `REFERENCE_LINE_START_PHI`.
+    pub start_phi: Option<f64>,
+    /// `REFERENCE_LINE_START_B` (banking).
+    pub start_bank: Option<f64>,
+    /// `REFERENCE_LINE_START_S` (slope).
+    pub start_slope: Option<f64>,
+    /// `REFERENCE_LINE_END_X`.
+    pub end_x: Option<f64>,
+    /// `REFERENCE_LINE_END_Y`.
+    pub end_y: Option<f64>,
+    /// `REFERENCE_LINE_END_Z`.
+    pub end_z: Option<f64>,
+    /// `REFERENCE_LINE_END_PHI`.
+    pub end_phi: Option<f64>,
+    /// `REFERENCE_LINE_END_B`.
+    pub end_bank: Option<f64>,
+    /// `REFERENCE_LINE_END_S`.
+    pub end_slope: Option<f64>,
+    /// `REFERENCE_LINE_INCREMENT`.
+    pub increment: Option<f64>,
+    /// `LONG_SECTION_V_RIGHT`.
+    pub v_right: Option<f64>,
+    /// `LONG_SECTION_V_LEFT`.
+    pub v_left: Option<f64>,
+    /// `LONG_SECTION_V_INCREMENT`.
+    pub v_increment: Option<f64>,
+    /// WGS84 values (`REFERENCE_LINE_START_LON` ... `REFERENCE_LINE_END_ALT`) and any
+    /// other key of the section, in file order.
+    pub extra: Vec<(String, f64)>,
+}
+
+#[derive(Clone, Copy)]
+enum RoadKey {
+    StartU,
+    EndU,
+    StartX,
+    StartY,
+    StartZ,
+    StartPhi,
+    StartBank,
+    StartSlope,
+    EndX,
+    EndY,
+    EndZ,
+    EndPhi,
+    EndBank,
+    EndSlope,
+    Increment,
+    VRight,
+    VLeft,
+    VIncrement,
+}
+
+const ROAD_KEYS: [(&str, RoadKey); 18] = [
+    ("reference_line_start_u", RoadKey::StartU),
+    ("reference_line_end_u", RoadKey::EndU),
+    ("reference_line_start_x", RoadKey::StartX),
+    ("reference_line_start_y", RoadKey::StartY),
+    ("reference_line_start_z", RoadKey::StartZ),
+    ("reference_line_start_phi", RoadKey::StartPhi),
+    ("reference_line_start_b", RoadKey::StartBank),
+    ("reference_line_start_s", RoadKey::StartSlope),
+    ("reference_line_end_x", RoadKey::EndX),
+    ("reference_line_end_y", RoadKey::EndY),
+    ("reference_line_end_z", RoadKey::EndZ),
+    ("reference_line_end_phi", RoadKey::EndPhi),
+    ("reference_line_end_b", RoadKey::EndBank),
+    ("reference_line_end_s", RoadKey::EndSlope),
+    ("reference_line_increment", RoadKey::Increment),
+    ("long_section_v_right", RoadKey::VRight),
+    ("long_section_v_left", RoadKey::VLeft),
+    ("long_section_v_increment", RoadKey::VIncrement),
+];
+
+impl RoadParams {
+    fn slot(&mut self, key: RoadKey) -> &mut Option<f64> {
+        match key {
+            RoadKey::StartU => &mut self.start_u,
+            RoadKey::EndU => &mut self.end_u,
+            RoadKey::StartX => &mut self.start_x,
+            RoadKey::StartY => &mut self.start_y,
+            RoadKey::StartZ => &mut self.start_z,
+            RoadKey::StartPhi => &mut self.start_phi,
+            RoadKey::StartBank => &mut self.start_bank,
+            RoadKey::StartSlope => &mut self.start_slope,
+            RoadKey::EndX => &mut self.end_x,
+            RoadKey::EndY => &mut self.end_y,
+            RoadKey::EndZ => &mut self.end_z,
+            RoadKey::EndPhi => &mut self.end_phi,
+            RoadKey::EndBank => &mut self.end_bank,
+            RoadKey::EndSlope => &mut self.end_slope,
+            RoadKey::Increment => &mut self.increment,
+            RoadKey::VRight => &mut self.v_right,
+            RoadKey::VLeft => &mut self.v_left,
+            RoadKey::VIncrement => &mut self.v_increment,
+        }
+    }
+
+    /// Every parameter that is set, with its keyword, in a fixed order.
+    pub fn entries(&self) -> Vec<(String, f64)> {
+        let mut copy = self.clone();
+        let mut out: Vec<(String, f64)> = ROAD_KEYS
+            .iter()
+            .filter_map(|(name, key)| copy.slot(*key).map(|v| (name.to_ascii_uppercase(), v)))
+            .collect();
+        out.extend(self.extra.iter().cloned());
+        out
+    }
+}
+
+/// What the option keywords of `$ROAD_CRG_OPTS` map to.
+#[derive(Clone, Copy)]
+enum OptKey {
+    Mode(u32, i32),
+    Double(u32),
+    Flag(u32),
+    WarnMsgs,
+    Ignored,
+}
+
+const OPTION_KEYS: [(&str, OptKey); 26] = [
+    ("border_mode_u", OptKey::Mode(opt::BORDER_MODE_U, 4)),
+    ("border_mode_v", OptKey::Mode(opt::BORDER_MODE_V, 4)),
+    ("border_offset_u", OptKey::Double(opt::BORDER_OFFSET_U)),
+    ("border_offset_v", OptKey::Double(opt::BORDER_OFFSET_V)),
+    ("border_smooth_ubeg", OptKey::Double(opt::SMOOTH_U_BEGIN)),
+    ("border_smooth_uend", OptKey::Double(opt::SMOOTH_U_END)),
+    ("refline_continuation", OptKey::Mode(opt::REFLINE_CONTINUE, 1)),
+    ("refline_search_far", OptKey::Double(opt::REFLINE_FAR)),
+    ("refline_search_close", OptKey::Double(opt::REFLINE_CLOSE)),
+    ("refline_search_u", OptKey::Double(opt::REFLINE_SEARCH_U)),
+    ("refline_search_ufrac", OptKey::Double(opt::REFLINE_SEARCH_U_FRAC)),
+    ("warn_msgs", OptKey::WarnMsgs),
+    ("warn_curv_local", OptKey::Flag(opt::WARN_CURV_LOCAL)),
+    ("warn_curv_global", OptKey::Flag(opt::WARN_CURV_GLOBAL)),
+    ("check_eps", OptKey::Double(opt::CHECK_EPS)),
+    ("check_inc", OptKey::Double(opt::CHECK_INC)),
+    ("check_tol", OptKey::Double(opt::CHECK_TOL)),
+    ("check_pro", OptKey::Ignored),
+    ("check_wgs", OptKey::Ignored),
+    ("log_msgs", OptKey::Ignored),
+    ("log_eval", OptKey::Ignored),
+    ("log_eval_freq", OptKey::Ignored),
+    ("log_hist", OptKey::Ignored),
+    ("log_hist_freq", OptKey::Ignored),
+    ("log_stat", OptKey::Ignored),
+    ("log_stat_freq", OptKey::Ignored),
+];
+
+const MODIFIER_KEYS: [(&str, u32); 24] = [
+    ("scale_z_grid", m::SCALE_Z),
+    ("scale_slope", m::SCALE_SLOPE),
+    ("scale_banking", m::SCALE_BANK),
+    ("scale_length", m::SCALE_LENGTH),
+    ("scale_width", m::SCALE_WIDTH),
+    ("scale_curvature", m::SCALE_CURVATURE),
+    ("grid_nan_mode", m::GRID_NAN_MODE),
+    ("grid_nan_offset", m::GRID_NAN_OFFSET),
+    ("refline_rotcenter_x", m::REFLINE_ROTCENTER_X),
+    ("refline_rotcenter_y", m::REFLINE_ROTCENTER_Y),
+    ("refline_offset_phi", m::REFLINE_OFFSET_PHI),
+    ("refline_offset_x", m::REFLINE_OFFSET_X),
+    ("refline_offset_y", m::REFLINE_OFFSET_Y),
+    ("refline_offset_z", m::REFLINE_OFFSET_Z),
+    ("refpoint_u_fraction", m::REFPOINT_U_FRAC),
+    ("refpoint_u_offset", m::REFPOINT_U_OFFSET),
+    ("refpoint_u", m::REFPOINT_U),
+    ("refpoint_v_fraction", m::REFPOINT_V_FRAC),
+    ("refpoint_v_offset", m::REFPOINT_V_OFFSET),
+    ("refpoint_v", m::REFPOINT_V),
+    ("refpoint_x", m::REFPOINT_X),
+    ("refpoint_y", m::REFPOINT_Y),
+    ("refpoint_z", m::REFPOINT_Z),
+    ("refpoint_phi", m::REFPOINT_PHI),
+];
+
+/// The bytes of a file: memory-mapped when possible.
+pub(crate) enum FileBytes {
+    Mapped(memmap2::Mmap),
+    Owned(Vec<u8>),
+}
+
+impl std::ops::Deref for FileBytes {
+    type Target = [u8];
+    fn deref(&self) -> &[u8] {
+        match self {
+            FileBytes::Mapped(m) => m,
+            FileBytes::Owned(v) => v,
+        }
+    }
+}
+
+/// Where the data section is.
+pub(crate) struct DataSource {
+    pub path: PathBuf,
+    pub bytes: FileBytes,
+    pub offset: usize,
+}
+
+/// Everything the header sections of a file and the files it references say.
+#[derive(Debug, Clone)]
+pub struct Header {
+    /// The file that was loaded.
+    pub path: PathBuf,
+    /// `$CT` lines.
+    pub comments: Vec<String>,
+    /// `$ROAD_CRG` parameters.
+    pub road: RoadParams,
+    /// Data format from `#:` (KRBI when absent).
+    pub format: DataFormat,
+    /// `D:` channels in column order.
+    pub channels: Vec<Channel>,
+    /// Options from `$ROAD_CRG_OPTS` over the defaults.
+    pub options: Settings,
+    /// Modifiers: the defaults, or exactly those of a `$ROAD_CRG_MODS` section.
+    pub modifiers: Settings,
+    /// `$ROAD_CRG_MPRO` key/value pairs.
+    pub mpro: Vec<(String, String)>,
+    /// Files read through `$ROAD_CRG_FILE`, in reading order.
+    pub references: Vec<PathBuf>,
+    /// `WARN_MSGS` from the options section, if given.
+    pub warn_msgs: Option<i32>,
+    /// Things worth telling the user that did not stop the reading.
+    pub warnings: Vec<String>,
+}
+
+struct Loader {
+    header: Header,
+    data: Option<DataSource>,
+    option_level: Option<usize>,
+    modifier_level: Option<usize>,
+    stack: Vec<PathBuf>,
+}
+
+/// Reads the header of `path` (following file references) and locates the data.
+pub(crate) fn read(path: &Path) -> Result<(Header, Option<DataSource>)> {
+    let mut loader = Loader {
+        header: Header {
+            path: path.to_path_buf(),
+            comments: Vec::new(),
+            road: RoadParams::default(),
+            format: DataFormat::Krbi,
+            channels: Vec::new(),
+            options: Settings::default_options(),
+            modifiers: Settings::default_modifiers(),
+            mpro: Vec::new(),
+            references: Vec::new(),
+            warn_msgs: None,
+            warnings: Vec::new(),
+        },
+        data: None,
+        option_level: None,
+        modifier_level: None,
+        stack: Vec::new(),
+    };
+    loader.read_file(path, 0)?;
+    Ok((loader.header, loader.data))
+}
+
+fn open(path: &Path) -> Result<FileBytes> {
+    let io = |source| Error::Io { path: path.to_path_buf(), source };
+    let file = std::fs::File::open(path).map_err(io)?;
+    let meta = file.metadata().map_err(io)?;
+    if meta.is_dir() {
+        return Err(Error::format(path, Location::File, "file", "is a directory, not a CRG file"));
+    }
+    if meta.len() == 0 {
+        return Err(Error::format(path, Location::File, "file", "is empty"));
+    }
+    // SAFETY: the map is read-only; a file changed by another process while it is
+    // mapped can change the bytes we read, never memory safety of this process.
+    match unsafe { memmap2::Mmap::map(&file) } {
+        Ok(map) => Ok(FileBytes::Mapped(map)),
+        Err(_) => std::fs::read(path).map(FileBytes::Owned).map_err(io),
+    }
+}
+
+impl Loader {
+    fn read_file(&mut self, path: &Path, level: usize) -> Result<()> {
+        let canonical = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
+        if self.stack.contains(&canonical) {
+            return Err(Error::format(path, Location::File, "$ROAD_CRG_FILE", "file references form a loop"));
+        }
+        if level > MAX_REFERENCE_DEPTH {
+            return Err(Error::format(
+                path,
+                Location::File,
+                "$ROAD_CRG_FILE",
+                format!("file references nest deeper than {MAX_REFERENCE_DEPTH} levels"),
+            ));
+        }
+        let bytes = open(path)?;
+        self.stack.push(canonical);
+        let result = self.parse(path, &bytes, level);
+        self.stack.pop();
+        if let Some(offset) = result? {
+            if self.data.is_some() {
+                return Err(Error::format(path, Location::File, "data section", "a second data section was found"));
+            }
+            self.data = Some(DataSource { path: path.to_path_buf(), bytes, offset });
+        }
+        Ok(())
+    }
+
+    /// Parses the header lines; returns the offset of the data section, if any.
+    fn parse(&mut self, path: &Path, bytes: &[u8], level: usize) -> Result<Option<usize>> {
+        let mut section = Section::None;
+        let mut reference = String::new();
+        let mut reference_line = 0;
+        for line in header::Lines::new(bytes) {
+            let text = header::latin1(line.bytes);
+            if let Some(tag) = header::tag(&text) {
+                if section == Section::File {
+                    self.follow_reference(path, &std::mem::take(&mut reference), reference_line, level)?;
+                }
+                section = Section::None;
+                match tag {
+                    Tag::Data => return Ok(Some(line.end)),
+                    Tag::End => {}
+                    Tag::Start(s) => {
+                        section = s;
+                        self.start_section(s, level);
+                    }
+                }
+                continue;
+            }
+            match section {
+                Section::Comment => self.header.comments.push(text),
+                _ if header::is_comment(&text) => {}
+                Section::File => {
+                    reference_line = line.number;
+                    reference.push_str(&reference_piece(&text));
+                }
+                Section::Road => self.road_line(path, line.number, &text)?,
+                Section::Options => self.option_line(path, line.number, &text, level)?,
+                Section::Modifiers => self.modifier_line(path, line.number, &text, level)?,
+                Section::Mpro => {
+                    if let Some((k, v)) = key_value(&text) {
+                        self.header.mpro.push((k, header::strip_inline_comment(v).trim().to_string()));
+                    }
+                }
+                Section::DataDef => self.data_def_line(path, line.number, &text)?,
+                Section::None => {}
+            }
+        }
+        if section == Section::File {
+            self.follow_reference(path, &reference, reference_line, level)?;
+        }
+        Ok(None)
+    }
+
+    fn start_section(&mut self, section: Section, level: usize) {
+        match section {
+            Section::Options if level == 0 || self.option_level.is_none() => {
+                self.header.options.reset_options();
+                self.option_level = Some(level);
+            }
+            Section::Modifiers if level == 0 || self.modifier_level.is_none() => {
+                self.header.modifiers.clear();
+                self.modifier_level = Some(level);
+            }
+            _ => {}
+        }
+    }
+
+    fn follow_reference(&mut self, from: &Path, name: &str, line: usize, level: usize) -> Result<()> {
+        if name.is_empty() {
+            return Err(Error::format(from, Location::Line(line), "$ROAD_CRG_FILE", "names no file"));
+        }
+        let expanded = expand_variables(name).map_err(|var| {
+            Error::format(
+                from,
+                Location::Line(line),
+                "$ROAD_CRG_FILE",
+                format!("environment variable ${var} is not set"),
+            )
+        })?;
+        let target = resolve_reference(from, Path::new(&expanded));
+        self.header.references.push(target.clone());
+        self.read_file(&target, level + 1)
+    }
+
+    fn road_line(&mut self, path: &Path, number: usize, text: &str) -> Result<()> {
+        let Some((key, value)) = key_value(text) else {
+            self.header.warnings.push(format!("{}:{number}: $ROAD_CRG: ignoring line without '='", path.display()));
+            return Ok(());
+        };
+        let field = key.to_ascii_uppercase();
+        let v = parse_f64_prefix(value).ok_or_else(|| {
+            Error::format(path, Location::Line(number), &field, format!("'{}' is not a number", value.trim()))
+        })?;
+        if !v.is_finite() {
+            return Err(Error::format(path, Location::Line(number), &field, "value must be finite"));
+        }
+        if key.starts_with("reference_line_offset_") {
+            return Ok(());
+        }
+        match lookup(&ROAD_KEYS, &key) {
+            Some((_, k)) => *self.header.road.slot(k) = Some(v),
+            None => self.header.road.extra.push((field, v)),
+        }
+        Ok(())
+    }
+
+    fn option_line(&mut self, path: &Path, number: usize, text: &str, level: usize) -> Result<()> {
+        if !(level == 0 || self.option_level == Some(level)) {
+            return Ok(());
+        }
+        let Some((key, value)) = key_value(text) else { return Ok(()) };
+        let field = key.to_ascii_uppercase();
+        let bad = |what: &str| Error::format(path, Location::Line(number), &field, what.to_string());
+        let Some((_, k)) = lookup(&OPTION_KEYS, &key) else {
+            self.header
+                .warnings
+                .push(format!("{}:{number}: $ROAD_CRG_OPTS: unknown option {field} ignored", path.display()));
+            return Ok(());
+        };
+        let opts = &mut self.header.options;
+        match k {
+            OptKey::Mode(id, max) => match parse_i32_prefix(value).filter(|v| (0..=max).contains(v)) {
+                Some(v) => opts.set_int(id, v)?,
+                None => self.header.warnings.push(format!(
+                    "{}:{number}: {field}: value '{}' is not one of 0..{max}; ignored",
+                    path.display(),
+                    value.trim()
+                )),
+            },
+            OptKey::Flag(id) => {
+                // The reference sets these checks only for the value 1, and stores the option's id.
+                if parse_i32_prefix(value) == Some(1) {
+                    opts.set_int(id, id as i32)?;
+                }
+            }
+            OptKey::Double(id) => {
+                let v = parse_f64_prefix(value).ok_or_else(|| bad("value is not a number"))?;
+                if !v.is_finite() {
+                    return Err(bad("value must be finite"));
+                }
+                if opts.set_double(id, v).is_err() {
+                    self.header.warnings.push(format!(
+                        "{}:{number}: {field}: value {v} refused (must be greater than zero)",
+                        path.display()
+                    ));
+                }
+            }
+            OptKey::WarnMsgs => self.header.warn_msgs = parse_i32_prefix(value),
+            OptKey::Ignored => {}
+        }
+        Ok(())
+    }
+
+    fn modifier_line(&mut self, path: &Path, number: usize, text: &str, level: usize) -> Result<()> {
+        if !(level == 0 || self.modifier_level == Some(level)) {
+            return Ok(());
+        }
+        let Some((key, value)) = key_value(text) else { return Ok(()) };
+        let field = key.to_ascii_uppercase();
+        let bad = |what: String| Error::format(path, Location::Line(number), &field, what);
+        let Some((_, id)) = lookup(&MODIFIER_KEYS, &key) else {
+            self.header
+                .warnings
+                .push(format!("{}:{number}: $ROAD_CRG_MODS: unknown modifier {field} ignored", path.display()));
+            return Ok(());
+        };
+        if id == m::GRID_NAN_MODE {
+            match parse_i32_prefix(value).filter(|v| (0..=2).contains(v)) {
+                Some(v) => self.header.modifiers.set_int(id, v)?,
+                None => self.header.warnings.push(format!(
+                    "{}:{number}: {field}: value '{}' is not one of 0..2; ignored",
+                    path.display(),
+                    value.trim()
+                )),
+            }
+        } else {
+            let v = parse_f64_prefix(value).ok_or_else(|| bad("value is not a number".into()))?;
+            if !v.is_finite() {
+                return Err(bad("value must be finite".into()));
+            }
+            self.header.modifiers.set_double(id, v)?;
+        }
+        Ok(())
+    }
+
+    fn data_def_line(&mut self, path: &Path, number: usize, text: &str) -> Result<()> {
+        let t = text.trim_start_matches(' ');
+        if header::starts_with_ignore_case(t, "#:") {
+            self.header.format = DataFormat::from_letters(&t[2..]);
+        } else if header::starts_with_ignore_case(t, "D:") {
+            let channel = header::parse_channel(t)
+                .map_err(|e| Error::format(path, Location::Line(number), "$KD_Definition", e))?;
+            self.header.channels.push(channel);
+        } else if !header::starts_with_ignore_case(t, "U:") {
+            self.header.warnings.push(format!("{}:{number}: $KD_Definition: ignoring line", path.display()));
+        }
+        Ok(())
+    }
+}
+
+/// The part of a `$ROAD_CRG_FILE` line that belongs to the file name: the first
+/// blank-separated word before any `!`.
+fn reference_piece(line: &str) -> String {
+    header::strip_inline_comment(line).split_whitespace().next().unwrap_or("").to_string()
+}
+
+/// Replaces `$NAME` (up to the next `/`) by the environment variable's value.
+/// Returns the name of an unset variable as the error.
+fn expand_variables(name: &str) -> std::result::Result<String, String> {
+    let mut out = String::new();
+    let mut rest = name;
+    while let Some(i) = rest.find('$') {
+        out.push_str(&rest[..i]);
+        let after = &rest[i + 1..];
+        let end = after.find('/').unwrap_or(after.len());
+        let var = &after[..end];
+        out.push_str(&std::env::var(var).map_err(|_| var.to_string())?);
+        rest = &after[end..];
+    }
+    out.push_str(rest);
+    Ok(out)
+}
+
+/// A relative reference is looked up in the working folder (as the reference library
+/// does) and, when not found there, beside the referencing file.
+fn resolve_reference(from: &Path, name: &Path) -> PathBuf {
+    if name.is_absolute() || name.exists() {
+        return name.to_path_buf();
+    }
+    match from.parent() {
+        Some(dir) if dir.join(name).exists() => dir.join(name),
+        _ => name.to_path_buf(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reference_names() {
+        assert_eq!(reference_piece("  ../a/b.crg  ! comment"), "../a/b.crg");
+        assert_eq!(reference_piece("!only"), "");
+        std::env::set_var("OPENCRG_TEST_DIR", "/tmp/x");
+        assert_eq!(expand_variables("$OPENCRG_TEST_DIR/r.crg").unwrap(), "/tmp/x/r.crg");
+        assert_eq!(expand_variables("$OPENCRG_NOT_SET_123/r.crg").unwrap_err(), "OPENCRG_NOT_SET_123");
+    }
+}

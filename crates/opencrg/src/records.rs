@@ -1,0 +1,180 @@
+//! Decoding of the data section: one record (all channels of one cross section) at a time.
+//!
+//! Text formats (LRFI, LDFI) use fixed-width fields; a record starts on a new line
+//! and spans as many 80-character lines as its channels need. A field that is not a
+//! number is NaN (the `**unused**` placeholder reads as 0, as in the reference).
+//! Binary formats (KRBI, KDBI) are big-endian IEEE numbers, records packed one
+//! after another.
+
+use crate::header::{parse_f64_prefix, DataFormat};
+use byteorder::{BigEndian, ByteOrder};
+
+/// Why decoding stopped early.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Truncated {
+    /// 1-based number of the incomplete record.
+    pub record: usize,
+    /// How many of its channels were complete.
+    pub channels_read: usize,
+}
+
+/// Calls `sink` with every complete record and returns how many there were.
+///
+/// Binary data stops after `max_records` (the count the header declares); text data
+/// runs to the end of the buffer. An incomplete record that is not just trailing
+/// blank space is reported as [`Truncated`].
+pub fn decode<E>(
+    format: DataFormat,
+    channels: usize,
+    data: &[u8],
+    max_records: usize,
+    mut sink: impl FnMut(usize, &[f64]) -> Result<(), E>,
+) -> Result<Result<usize, Truncated>, E> {
+    let mut record = vec![0.0f64; channels];
+    if channels == 0 {
+        return Ok(Ok(0));
+    }
+    if format.is_text() {
+        return decode_text(format, data, &mut record, &mut sink);
+    }
+    let width = format.field_width();
+    let size = width * channels;
+    let mut count = 0;
+    for chunk in data.chunks(size).take(max_records) {
+        if chunk.len() < size {
+            return Ok(Err(Truncated { record: count + 1, channels_read: chunk.len() / width }));
+        }
+        for (value, bytes) in record.iter_mut().zip(chunk.chunks_exact(width)) {
+            *value = if width == 4 { f64::from(BigEndian::read_f32(bytes)) } else { BigEndian::read_f64(bytes) };
+        }
+        sink(count, &record)?;
+        count += 1;
+    }
+    Ok(Ok(count))
+}
+
+fn is_newline(b: u8) -> bool {
+    b == b'\n' || b == b'\r'
+}
+
+fn decode_text<E>(
+    format: DataFormat,
+    data: &[u8],
+    record: &mut [f64],
+    sink: &mut impl FnMut(usize, &[f64]) -> Result<(), E>,
+) -> Result<Result<usize, Truncated>, E> {
+    let width = format.field_width();
+    let bytes_per_record = width * record.len();
+    let lines_per_record = bytes_per_record.div_ceil(80);
+    let mut pos = 0;
+    let mut count = 0;
+    loop {
+        while pos < data.len() && is_newline(data[pos]) {
+            pos += 1;
+        }
+        if pos >= data.len() {
+            return Ok(Ok(count));
+        }
+        let start = pos;
+        for _ in 0..lines_per_record {
+            match data[pos..].iter().position(|&b| is_newline(b)) {
+                Some(n) => {
+                    pos += n;
+                    pos += if data[pos] == b'\r' && data.get(pos + 1) == Some(&b'\n') { 2 } else { 1 };
+                }
+                None => {
+                    pos = data.len();
+                    break;
+                }
+            }
+        }
+        let body = &data[start..pos];
+        let mut at = 0;
+        for (i, value) in record.iter_mut().enumerate() {
+            while at < body.len() && is_newline(body[at]) {
+                at += 1;
+            }
+            if body.len() - at < width {
+                let trailing_blank = body.iter().all(|b| b.is_ascii_whitespace());
+                return Ok(if trailing_blank && i == 0 {
+                    Ok(count)
+                } else {
+                    Err(Truncated { record: count + 1, channels_read: i })
+                });
+            }
+            *value = text_field(&body[at..at + width]);
+            at += width;
+        }
+        sink(count, record)?;
+        count += 1;
+    }
+}
+
+/// Reads one fixed-width text field the way the reference does.
+pub fn text_field(field: &[u8]) -> f64 {
+    const NUMERIC: &[u8] = b"0123456789+-.eEdD ";
+    if field.iter().all(|b| NUMERIC.contains(b)) {
+        // Only ASCII here, so the bytes are valid UTF-8.
+        let text = std::str::from_utf8(field).unwrap_or("");
+        parse_f64_prefix(text).unwrap_or(0.0)
+    } else if field == b"**unused**" {
+        0.0
+    } else {
+        f64::NAN
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn collect(format: DataFormat, n: usize, data: &[u8], max: usize) -> (Vec<Vec<f64>>, Result<usize, Truncated>) {
+        let mut rows = Vec::new();
+        let r = decode::<()>(format, n, data, max, |_, r| {
+            rows.push(r.to_vec());
+            Ok(())
+        })
+        .unwrap();
+        (rows, r)
+    }
+
+    #[test]
+    fn text_records_wrap_and_touch() {
+        let row2: String = ["**********", "       0.5", "       1.0", "       2.0", "       3.0", "       4.0", "       5.0", "       6.0"].concat();
+        let text = format!(
+            " 1.0000000-2.0000000 3.0000000 4.0000000 5.0000000 6.0000000 7.0000000 8.0000000\n 9.0000000\n{row2}\n       1.5\n"
+        );
+        let data = text.as_bytes();
+        let (rows, r) = collect(DataFormat::Lrfi, 9, data, usize::MAX);
+        assert_eq!(r, Ok(2));
+        assert_eq!(rows[0], vec![1.0, -2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0]);
+        assert!(rows[1][0].is_nan());
+        assert_eq!(rows[1][8], 1.5);
+    }
+
+    #[test]
+    fn truncated_text_is_reported() {
+        let (_, r) = collect(DataFormat::Lrfi, 3, b" 1.0000000 2.0000000 3.0000000\n 1.0000000\n", usize::MAX);
+        assert_eq!(r, Err(Truncated { record: 2, channels_read: 1 }));
+    }
+
+    #[test]
+    fn binary_records() {
+        let mut data = Vec::new();
+        for v in [1.0f32, 2.0, 3.0, 4.0, f32::NAN] {
+            data.extend_from_slice(&v.to_be_bytes());
+        }
+        let (rows, r) = collect(DataFormat::Krbi, 2, &data, 2);
+        assert_eq!(r, Ok(2));
+        assert_eq!(rows, vec![vec![1.0, 2.0], vec![3.0, 4.0]]);
+        let (_, r) = collect(DataFormat::Krbi, 2, &data[..12], 2);
+        assert_eq!(r, Err(Truncated { record: 2, channels_read: 1 }));
+    }
+
+    #[test]
+    fn unused_placeholder() {
+        assert_eq!(text_field(b"**unused**"), 0.0);
+        assert!(text_field(b"*****nan**").is_nan());
+        assert_eq!(text_field(b"          "), 0.0);
+    }
+}

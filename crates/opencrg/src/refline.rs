@@ -1,0 +1,319 @@
+//! The reference line: u axis, x/y points integrated from the heading channel (or a
+//! straight line), z integrated from the slope, banking, and closed-track data.
+
+use crate::reader::RoadParams;
+use crate::road::{Builder, ColumnMap};
+
+/// Which optional end values the header defined.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Defined {
+    /// `REFERENCE_LINE_END_X` was given.
+    pub x_end: bool,
+    /// `REFERENCE_LINE_END_Y` was given.
+    pub y_end: bool,
+    /// `REFERENCE_LINE_START_Z` was given.
+    pub z_start: bool,
+    /// `REFERENCE_LINE_END_Z` was given.
+    pub z_end: bool,
+}
+
+/// The reference line of a road.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RefLine {
+    /// u of the first cross section.
+    pub u_first: f64,
+    /// u of the last cross section.
+    pub u_last: f64,
+    /// Distance between cross sections.
+    pub u_inc: f64,
+    /// Number of cross sections.
+    pub n: usize,
+    /// x of every cross section's reference point.
+    pub x: Vec<f64>,
+    /// y of every cross section's reference point.
+    pub y: Vec<f64>,
+    /// Start x (header).
+    pub x_first: f64,
+    /// Start y (header).
+    pub y_first: f64,
+    /// End x (header, or the integrated end point).
+    pub x_last: f64,
+    /// End y (header, or the integrated end point).
+    pub y_last: f64,
+    /// Heading channel: `phi[i]` is the heading from point `i - 1` to point `i` (`phi[0]` is the start heading).
+    pub phi: Option<Vec<f64>>,
+    /// Start heading.
+    pub phi_first: f64,
+    /// End heading.
+    pub phi_last: f64,
+    /// Slope channel.
+    pub slope: Option<Vec<f64>>,
+    /// Start slope (constant slope when there is no channel).
+    pub slope_first: f64,
+    /// End slope.
+    pub slope_last: f64,
+    /// Banking channel.
+    pub bank: Option<Vec<f64>>,
+    /// Start banking (constant banking when there is no channel).
+    pub bank_first: f64,
+    /// End banking.
+    pub bank_last: f64,
+    /// Whether any banking is defined.
+    pub has_bank: bool,
+    /// z of the reference line, when a slope is defined.
+    pub z: Option<Vec<f64>>,
+    /// Start z.
+    pub z_first: f64,
+    /// End z.
+    pub z_last: f64,
+    /// Which end values the header gave.
+    pub defined: Defined,
+    /// sin and cos of the start and end headings.
+    pub(crate) trig: Trig,
+    /// u range over which the line can be closed into a loop.
+    pub closed: Option<(f64, f64)>,
+}
+
+/// Cached sines and cosines of the end headings.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub(crate) struct Trig {
+    pub first_sin: f64,
+    pub first_cos: f64,
+    pub last_sin: f64,
+    pub last_cos: f64,
+}
+
+fn spacing(values: impl Iterator<Item = f64>) -> (f64, f64, f64) {
+    let (mut min, mut max, mut sum) = (f64::INFINITY, f64::NEG_INFINITY, 0.0);
+    for d in values {
+        min = min.min(d);
+        max = max.max(d);
+        sum += d;
+    }
+    (min, max, sum)
+}
+
+impl RefLine {
+    pub(crate) fn from_records(
+        p: &RoadParams,
+        cols: &ColumnMap,
+        b: Builder,
+        n: usize,
+        mut u_first: f64,
+        mut u_inc: f64,
+    ) -> Result<RefLine, String> {
+        let u_last;
+        if cols.x.is_some() {
+            let (min, max, total) =
+                spacing(b.x.windows(2).zip(b.y.windows(2)).map(|(x, y)| (x[1] - x[0]).hypot(y[1] - y[0])));
+            if !(min >= 1e-6) {
+                return Err("reference line x/y points are closer than 1e-6 m".into());
+            }
+            if (max - min) / min > 3e-2 {
+                return Err("reference line x/y points are not evenly spaced".into());
+            }
+            u_inc = total / (n - 1) as f64;
+            u_last = total;
+        } else if cols.u.is_some() {
+            let (min, max, _) = spacing(b.u.windows(2).map(|w| w[1] - w[0]));
+            if !(min >= 1e-6) {
+                return Err("reference line u values do not increase".into());
+            }
+            if (max - min) / min > 3e-2 {
+                return Err("reference line u values are not evenly spaced".into());
+            }
+            u_first = b.u[0];
+            u_last = b.u[n - 1];
+            u_inc = (u_last - u_first) / (n - 1) as f64;
+        } else {
+            u_last = u_first + u_inc * (n - 1) as f64;
+        }
+        if b.slope.iter().chain(b.bank.iter()).any(|v| v.is_nan()) {
+            return Err("slope or banking channel holds NaN".into());
+        }
+        let phi_first = p.start_phi.unwrap_or(0.0);
+        let phi = cols.phi.map(|_| {
+            let mut phi = b.phi;
+            phi[0] = phi_first;
+            phi
+        });
+        let slope_first = p.start_slope.unwrap_or(0.0);
+        let bank_first = p.start_bank.unwrap_or(0.0);
+        let bank_last = p.end_bank.unwrap_or(0.0);
+        let has_bank = cols.bank.is_some() || bank_first != 0.0 || bank_last != 0.0;
+        let (x, y) = if cols.x.is_some() { (b.x, b.y) } else { (vec![0.0; n], vec![0.0; n]) };
+        Ok(RefLine {
+            u_first,
+            u_last,
+            u_inc,
+            n,
+            x,
+            y,
+            x_first: p.start_x.unwrap_or(0.0),
+            y_first: p.start_y.unwrap_or(0.0),
+            x_last: p.end_x.unwrap_or(0.0),
+            y_last: p.end_y.unwrap_or(0.0),
+            phi,
+            phi_first,
+            phi_last: p.end_phi.unwrap_or(0.0),
+            slope: cols.slope.map(|_| b.slope),
+            slope_first,
+            slope_last: p.end_slope.unwrap_or(0.0),
+            bank: cols.bank.map(|_| b.bank),
+            bank_first,
+            bank_last,
+            has_bank,
+            z: None,
+            z_first: p.start_z.unwrap_or(0.0),
+            z_last: p.end_z.unwrap_or(0.0),
+            defined: Defined {
+                x_end: p.end_x.is_some(),
+                y_end: p.end_y.is_some(),
+                z_start: p.start_z.is_some(),
+                z_end: p.end_z.is_some(),
+            },
+            trig: Trig::default(),
+            closed: None,
+        })
+    }
+
+    /// Computes x/y of every cross section: a straight line along the start heading,
+    /// or Euler steps along the heading channel. When the header gives the end
+    /// point, a backward pass from the end is blended with the forward pass so the
+    /// line meets both ends.
+    pub(crate) fn integrate_xy(&mut self) {
+        let n = self.n;
+        let inc = self.u_inc;
+        let both_ends = self.defined.x_end && self.defined.y_end;
+        let Some(phi) = &self.phi else {
+            let (c, s) = (self.phi_first.cos(), self.phi_first.sin());
+            for i in 0..n {
+                self.x[i] = self.x_first + i as f64 * inc * c;
+                self.y[i] = self.y_first + i as f64 * inc * s;
+            }
+            if !both_ends {
+                self.x_last = self.x[n - 1];
+                self.y_last = self.y[n - 1];
+            }
+            return;
+        };
+        if both_ends {
+            self.x[n - 1] = self.x_last;
+            self.y[n - 1] = self.y_last;
+            for i in (1..n).rev() {
+                self.x[i - 1] = self.x[i] - inc * phi[i].cos();
+                self.y[i - 1] = self.y[i] - inc * phi[i].sin();
+            }
+            self.x[0] = self.x_first;
+            self.y[0] = self.y_first;
+            for i in 0..n - 1 {
+                let f = (i + 1) as f64 / (n - 1) as f64;
+                self.x[i + 1] = (1.0 - f) * (self.x[i] + inc * phi[i + 1].cos()) + f * self.x[i + 1];
+                self.y[i + 1] = (1.0 - f) * (self.y[i] + inc * phi[i + 1].sin()) + f * self.y[i + 1];
+            }
+        } else {
+            self.x[0] = self.x_first;
+            self.y[0] = self.y_first;
+            for i in 0..n - 1 {
+                self.x[i + 1] = self.x[i] + inc * phi[i + 1].cos();
+                self.y[i + 1] = self.y[i] + inc * phi[i + 1].sin();
+            }
+            self.x_last = self.x[n - 1];
+            self.y_last = self.y[n - 1];
+        }
+    }
+
+    /// Computes the reference line z from the slope channel or the constant start
+    /// slope; nothing to do when neither is given.
+    pub(crate) fn integrate_z(&mut self) {
+        if self.slope_first == 0.0 && self.slope.is_none() {
+            return;
+        }
+        let n = self.n;
+        let inc = self.u_inc;
+        let slope_at = |s: &Option<Vec<f64>>, i: usize| s.as_ref().map_or(self.slope_first, |v| v[i]);
+        let mut z = self.z.take().unwrap_or_else(|| vec![0.0; n]);
+        if self.defined.z_end {
+            z[n - 1] = self.z_last;
+            for i in (1..n).rev() {
+                z[i - 1] = z[i] - slope_at(&self.slope, i) * inc;
+            }
+            z[0] = self.z_first;
+            for i in 0..n.saturating_sub(2) {
+                let f = i as f64 / (n - 1) as f64;
+                z[i + 1] = (1.0 - f) * (z[i] + slope_at(&self.slope, i + 1) * inc) + f * z[i + 1];
+            }
+        } else {
+            z[0] = self.z_first;
+            for i in 0..n - 1 {
+                z[i + 1] = z[i] + slope_at(&self.slope, i + 1) * inc;
+            }
+            self.z_last = z[n - 1];
+        }
+        self.z = Some(z);
+    }
+
+    /// Updates the cached end headings and finds whether the line can be closed: the
+    /// continuations of both ends must meet ahead of the end and behind the start.
+    pub(crate) fn update_utility(&mut self) {
+        self.update_trig();
+        self.closed = None;
+        let (a1, a2) = (self.x_first, self.y_first);
+        let (m1, m2) = (self.trig.first_cos, self.trig.first_sin);
+        let (b1, b2) = (self.x_last, self.y_last);
+        let (n1, n2) = (self.trig.last_cos, self.trig.last_sin);
+        let along = m1 * n1 + m2 * n2;
+        if along <= 0.5 {
+            return;
+        }
+        let l = ((a2 - b2) * m2 + (a1 - b1) * m1) / along;
+        if !(l > 0.0) {
+            return;
+        }
+        let k = ((b2 - a2) * n2 + (b1 - a1) * n1) / along;
+        if !(k < 0.0) {
+            return;
+        }
+        let mut range = (self.u_first + 0.5 * k * along, self.u_last + 0.5 * l * along);
+        let cross = m1 * n2 - m2 * n1;
+        if cross.abs() > 1e-6 {
+            let l = (m1 * (a2 - b2) + m2 * (b1 - a1)) / cross;
+            if l >= 0.0 {
+                let k = (n1 * (a2 - b2) + n2 * (b1 - a1)) / cross;
+                if k <= 0.0 {
+                    range = (self.u_first + k, self.u_last + l);
+                }
+            }
+        }
+        self.closed = Some(range);
+    }
+
+    pub(crate) fn update_trig(&mut self) {
+        self.trig = Trig {
+            first_sin: self.phi_first.sin(),
+            first_cos: self.phi_first.cos(),
+            last_sin: self.phi_last.sin(),
+            last_cos: self.phi_last.cos(),
+        };
+    }
+
+    /// Index of the u interval holding `u` and the fraction within it, clamped to the data
+    /// (the fraction may lie outside 0..1 beyond the ends).
+    #[inline]
+    pub(crate) fn interval(&self, u: f64) -> (usize, f64) {
+        let f = (u - self.u_first) / self.u_inc;
+        let i = if f < 0.0 { 0 } else { (f as usize).min(self.n - 2) };
+        (i, f - i as f64)
+    }
+
+    /// Curvature at cross section `i` from the points `i - k`, `i`, `i + k`.
+    #[inline]
+    pub(crate) fn curvature_at(&self, i: usize, k: usize) -> f64 {
+        let hd = 1.0 / (self.u_inc * k as f64).powf(3.0);
+        let dx0 = self.x[i] - self.x[i - k];
+        let dx1 = self.x[i + k] - self.x[i];
+        let dy0 = self.y[i] - self.y[i - k];
+        let dy1 = self.y[i + k] - self.y[i];
+        (dx0 * dy1 - dy0 * dx1) * hd
+    }
+}

@@ -1,0 +1,249 @@
+//! Writing a road to a CRG file in any of the four data formats.
+//!
+//! The header carries the reference line start (and end, where the source gave it),
+//! the long section layout, the road's options and modifiers; the data holds the
+//! heading, slope and banking channels that the road has and the elevation grid.
+//! Reading the file back gives the same data: bit-exact for KDBI (and for KRBI
+//! where the source values are single precision), within the text format's
+//! precision for LRFI and LDFI.
+
+use crate::error::{Error, Result};
+use crate::grid::VLayout;
+use crate::header::DataFormat;
+use crate::road::Road;
+use crate::settings::{opt, Value};
+use std::io::{self, BufWriter, Write};
+use std::path::Path;
+
+/// Writes `road` to `path` in `format`.
+pub fn write(road: &Road, path: impl AsRef<Path>, format: DataFormat) -> Result<()> {
+    let path = path.as_ref();
+    let err = |source| Error::Write { path: path.to_path_buf(), source };
+    let file = std::fs::File::create(path).map_err(err)?;
+    let mut out = BufWriter::with_capacity(1 << 20, file);
+    write_to(road, &mut out, format).map_err(err)?;
+    out.flush().map_err(err)
+}
+
+const OPTION_KEYWORDS: [(u32, &str); 13] = [
+    (opt::BORDER_MODE_U, "BORDER_MODE_U"),
+    (opt::BORDER_MODE_V, "BORDER_MODE_V"),
+    (opt::BORDER_OFFSET_U, "BORDER_OFFSET_U"),
+    (opt::BORDER_OFFSET_V, "BORDER_OFFSET_V"),
+    (opt::SMOOTH_U_BEGIN, "BORDER_SMOOTH_UBEG"),
+    (opt::SMOOTH_U_END, "BORDER_SMOOTH_UEND"),
+    (opt::REFLINE_CONTINUE, "REFLINE_CONTINUATION"),
+    (opt::REFLINE_FAR, "REFLINE_SEARCH_FAR"),
+    (opt::REFLINE_CLOSE, "REFLINE_SEARCH_CLOSE"),
+    (opt::CHECK_EPS, "CHECK_EPS"),
+    (opt::CHECK_INC, "CHECK_INC"),
+    (opt::CHECK_TOL, "CHECK_TOL"),
+    (opt::WARN_CURV_GLOBAL, "WARN_CURV_GLOBAL"),
+];
+
+const MODIFIER_KEYWORDS: [(u32, &str); 24] = [
+    (crate::settings::m::SCALE_Z, "SCALE_Z_GRID"),
+    (crate::settings::m::SCALE_SLOPE, "SCALE_SLOPE"),
+    (crate::settings::m::SCALE_BANK, "SCALE_BANKING"),
+    (crate::settings::m::SCALE_LENGTH, "SCALE_LENGTH"),
+    (crate::settings::m::SCALE_WIDTH, "SCALE_WIDTH"),
+    (crate::settings::m::SCALE_CURVATURE, "SCALE_CURVATURE"),
+    (crate::settings::m::GRID_NAN_MODE, "GRID_NAN_MODE"),
+    (crate::settings::m::GRID_NAN_OFFSET, "GRID_NAN_OFFSET"),
+    (crate::settings::m::REFPOINT_V, "REFPOINT_V"),
+    (crate::settings::m::REFPOINT_V_FRAC, "REFPOINT_V_FRACTION"),
+    (crate::settings::m::REFPOINT_V_OFFSET, "REFPOINT_V_OFFSET"),
+    (crate::settings::m::REFPOINT_U, "REFPOINT_U"),
+    (crate::settings::m::REFPOINT_U_FRAC, "REFPOINT_U_FRACTION"),
+    (crate::settings::m::REFPOINT_U_OFFSET, "REFPOINT_U_OFFSET"),
+    (crate::settings::m::REFPOINT_X, "REFPOINT_X"),
+    (crate::settings::m::REFPOINT_Y, "REFPOINT_Y"),
+    (crate::settings::m::REFPOINT_Z, "REFPOINT_Z"),
+    (crate::settings::m::REFPOINT_PHI, "REFPOINT_PHI"),
+    (crate::settings::m::REFLINE_OFFSET_X, "REFLINE_OFFSET_X"),
+    (crate::settings::m::REFLINE_OFFSET_Y, "REFLINE_OFFSET_Y"),
+    (crate::settings::m::REFLINE_OFFSET_Z, "REFLINE_OFFSET_Z"),
+    (crate::settings::m::REFLINE_OFFSET_PHI, "REFLINE_OFFSET_PHI"),
+    (crate::settings::m::REFLINE_ROTCENTER_X, "REFLINE_ROTCENTER_X"),
+    (crate::settings::m::REFLINE_ROTCENTER_Y, "REFLINE_ROTCENTER_Y"),
+];
+
+fn value_text(v: Value) -> String {
+    match v {
+        Value::Int(i) => i.to_string(),
+        Value::Double(d) => format!("{d:?}"),
+    }
+}
+
+/// Writes `road` as a CRG file to any writer.
+pub fn write_to(road: &Road, out: &mut impl Write, format: DataFormat) -> io::Result<()> {
+    let l = &road.line;
+    let g = &road.grid;
+    writeln!(out, "$CT")?;
+    for c in &road.header.comments {
+        writeln!(out, "{c}")?;
+    }
+    writeln!(out, "written by opencrg {}", env!("CARGO_PKG_VERSION"))?;
+    writeln!(out, "$!**********************************************************************")?;
+    writeln!(out, "$ROAD_CRG")?;
+    let mut kv = |k: &str, v: f64| writeln!(out, "{k:<25}= {v:?}");
+    kv("REFERENCE_LINE_START_U", l.u_first)?;
+    kv("REFERENCE_LINE_END_U", l.u_last)?;
+    kv("REFERENCE_LINE_INCREMENT", l.u_inc)?;
+    kv("REFERENCE_LINE_START_X", l.x_first)?;
+    kv("REFERENCE_LINE_START_Y", l.y_first)?;
+    if l.defined.x_end && l.defined.y_end {
+        kv("REFERENCE_LINE_END_X", l.x_last)?;
+        kv("REFERENCE_LINE_END_Y", l.y_last)?;
+    }
+    kv("REFERENCE_LINE_START_PHI", l.phi_first)?;
+    kv("REFERENCE_LINE_END_PHI", l.phi_last)?;
+    if l.defined.z_start {
+        kv("REFERENCE_LINE_START_Z", l.z_first)?;
+    }
+    if l.defined.z_end {
+        kv("REFERENCE_LINE_END_Z", l.z_last)?;
+    }
+    for (k, v) in [
+        ("REFERENCE_LINE_START_S", l.slope_first),
+        ("REFERENCE_LINE_END_S", l.slope_last),
+        ("REFERENCE_LINE_START_B", l.bank_first),
+        ("REFERENCE_LINE_END_B", l.bank_last),
+    ] {
+        if v != 0.0 {
+            kv(k, v)?;
+        }
+    }
+    kv("LONG_SECTION_V_RIGHT", g.v_first)?;
+    kv("LONG_SECTION_V_LEFT", g.v_last)?;
+    if g.layout == VLayout::Indexed {
+        kv("LONG_SECTION_V_INCREMENT", g.v_inc)?;
+    }
+    for (k, v) in &road.header.road.extra {
+        kv(k, *v)?;
+    }
+    writeln!(out, "$!**********************************************************************")?;
+    writeln!(out, "$ROAD_CRG_OPTS")?;
+    for (id, name) in OPTION_KEYWORDS {
+        if let Some(v) = road.options.get(id) {
+            let v = if id == opt::WARN_CURV_GLOBAL { Value::Int(1) } else { v };
+            writeln!(out, "{name:<25}= {}", value_text(v))?;
+        }
+    }
+    writeln!(out, "$!**********************************************************************")?;
+    writeln!(out, "$ROAD_CRG_MODS")?;
+    for (id, name) in MODIFIER_KEYWORDS {
+        if let Some(v) = road.modifiers.get(id) {
+            writeln!(out, "{name:<25}= {}", value_text(v))?;
+        }
+    }
+    writeln!(out, "$!**********************************************************************")?;
+    writeln!(out, "$KD_Definition")?;
+    writeln!(out, "#:{}", format.name())?;
+    if l.phi.is_some() {
+        writeln!(out, "D:reference line phi,rad")?;
+    }
+    if l.slope.is_some() {
+        writeln!(out, "D:reference line slope,m/m")?;
+    }
+    if l.bank.is_some() {
+        writeln!(out, "D:reference line banking,m/m")?;
+    }
+    for (i, v) in g.v.iter().enumerate() {
+        match g.layout {
+            VLayout::Indexed => writeln!(out, "D:long section {},m", i + 1)?,
+            VLayout::Explicit => writeln!(out, "D:long section at v = {v:?},m")?,
+        }
+    }
+    writeln!(out, "$!**********************************************************************")?;
+    writeln!(out, "{}", "$".repeat(80))?;
+
+    let width = format.field_width();
+    let mut row: Vec<f64> = Vec::with_capacity(g.nv + 3);
+    let mut text = String::new();
+    let mut bytes_written = 0usize;
+    for iu in 0..g.nu {
+        row.clear();
+        for ch in [&l.phi, &l.slope, &l.bank].into_iter().flatten() {
+            row.push(ch[iu]);
+        }
+        row.extend(g.z[iu * g.nv..(iu + 1) * g.nv].iter().map(|&z| f64::from(z) + g.mean));
+        if format.is_text() {
+            text.clear();
+            let per_line = 80 / width;
+            for (i, v) in row.iter().enumerate() {
+                if i > 0 && i % per_line == 0 {
+                    text.push('\n');
+                }
+                fit(&mut text, *v, width);
+            }
+            text.push('\n');
+            out.write_all(text.as_bytes())?;
+        } else {
+            for v in &row {
+                if width == 4 {
+                    out.write_all(&(*v as f32).to_be_bytes())?;
+                } else {
+                    out.write_all(&v.to_be_bytes())?;
+                }
+                bytes_written += width;
+            }
+        }
+    }
+    if !format.is_text() {
+        while !bytes_written.is_multiple_of(80) {
+            if width == 4 {
+                out.write_all(&f32::NAN.to_be_bytes())?;
+            } else {
+                out.write_all(&f64::NAN.to_be_bytes())?;
+            }
+            bytes_written += width;
+        }
+    }
+    Ok(())
+}
+
+/// Appends `v` in exactly `width` characters with as much precision as fits.
+fn fit(out: &mut String, v: f64, width: usize) {
+    use std::fmt::Write as _;
+    if !v.is_finite() {
+        out.push_str(&"*".repeat(width - 3));
+        out.push_str("NaN");
+        return;
+    }
+    let best = candidates(v, width).min_by(|a, b| (a.1).total_cmp(&b.1)).map(|c| c.0);
+    match best {
+        Some(s) => {
+            let _ = write!(out, "{s:>width$}");
+        }
+        None => out.push_str(&"*".repeat(width)),
+    }
+}
+
+/// Fixed and exponent renderings of `v` that fit in `width - 1` characters (one
+/// blank stays in front), with their errors.
+fn candidates(v: f64, width: usize) -> impl Iterator<Item = (String, f64)> {
+    let room = width - 1;
+    let mut fixed = (0..room).rev().map(move |p| format!("{v:.p$}"));
+    let sci = (0..room).rev().map(move |p| format!("{v:.p$e}"));
+    fixed.find(|s| s.len() <= room).into_iter().chain(sci.clone().find(|s| s.len() <= room)).map(move |s| {
+        let err = (s.parse::<f64>().unwrap_or(f64::INFINITY) - v).abs();
+        (s, err)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::fit;
+
+    #[test]
+    fn fields_fit_their_width() {
+        for (v, w) in [(0.0111111, 10), (-123456.789, 10), (1.234e-9, 10), (6.02e23, 10), (-0.5, 20), (1.0 / 3.0, 20)] {
+            let mut s = String::new();
+            fit(&mut s, v, w);
+            assert_eq!(s.len(), w, "{s:?}");
+            let back: f64 = s.trim().parse().unwrap();
+            assert!((back - v).abs() <= v.abs() * 1e-5 + 1e-7, "{v} -> {s}");
+        }
+    }
+}
