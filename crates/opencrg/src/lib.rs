@@ -30,6 +30,7 @@ pub mod refline;
 mod road;
 pub mod search;
 pub mod settings;
+pub mod synth;
 pub mod writer;
 
 pub use contact::ContactPoint;

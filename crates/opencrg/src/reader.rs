@@ -262,27 +262,53 @@ struct Loader {
 
 /// Reads the header of `path` (following file references) and locates the data.
 pub(crate) fn read(path: &Path) -> Result<(Header, Option<DataSource>)> {
-    let mut loader = Loader {
-        header: Header {
-            path: path.to_path_buf(),
-            comments: Vec::new(),
-            road: RoadParams::default(),
-            format: DataFormat::Krbi,
-            channels: Vec::new(),
-            options: Settings::default_options(),
-            modifiers: Settings::default_modifiers(),
-            mpro: Vec::new(),
-            references: Vec::new(),
-            warn_msgs: None,
-            warnings: Vec::new(),
-        },
-        data: None,
-        option_level: None,
-        modifier_level: None,
-        stack: Vec::new(),
-    };
+    let mut loader = Loader::new(path);
     loader.read_file(path, 0)?;
     Ok((loader.header, loader.data))
+}
+
+/// Reads a CRG file held in memory; `name` is used in messages and to resolve
+/// relative file references.
+pub(crate) fn read_bytes(bytes: Vec<u8>, name: &Path) -> Result<(Header, Option<DataSource>)> {
+    if bytes.is_empty() {
+        return Err(Error::format(name, Location::File, "file", "is empty"));
+    }
+    let mut loader = Loader::new(name);
+    let offset = loader.parse(name, &bytes, 0)?;
+    let data = match offset {
+        Some(offset) => {
+            if loader.data.is_some() {
+                return Err(Error::format(name, Location::File, "data section", "a second data section was found"));
+            }
+            Some(DataSource { path: name.to_path_buf(), bytes: FileBytes::Owned(bytes), offset })
+        }
+        None => loader.data,
+    };
+    Ok((loader.header, data))
+}
+
+impl Loader {
+    fn new(path: &Path) -> Self {
+        Loader {
+            header: Header {
+                path: path.to_path_buf(),
+                comments: Vec::new(),
+                road: RoadParams::default(),
+                format: DataFormat::Krbi,
+                channels: Vec::new(),
+                options: Settings::default_options(),
+                modifiers: Settings::default_modifiers(),
+                mpro: Vec::new(),
+                references: Vec::new(),
+                warn_msgs: None,
+                warnings: Vec::new(),
+            },
+            data: None,
+            option_level: None,
+            modifier_level: None,
+            stack: Vec::new(),
+        }
+    }
 }
 
 fn open(path: &Path) -> Result<FileBytes> {
@@ -337,7 +363,11 @@ impl Loader {
         let mut reference_line = 0;
         for line in header::Lines::new(bytes) {
             let text = header::latin1(line.bytes);
-            if let Some(tag) = header::tag(&text) {
+            // In comment and file sections only a '$' in column 1 ends the section
+            // (a file name may start with a blank and a $VARIABLE).
+            let column_one = matches!(section, Section::Comment | Section::File);
+            let tag = if column_one && !text.starts_with('$') { None } else { header::tag(&text) };
+            if let Some(tag) = tag {
                 if section == Section::File {
                     self.follow_reference(path, &std::mem::take(&mut reference), reference_line, level)?;
                 }

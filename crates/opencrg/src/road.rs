@@ -48,6 +48,22 @@ impl Road {
         Road::build(header, data)
     }
 
+    /// Reads a CRG file held in memory. `name` stands for the file in messages;
+    /// relative file references are looked up in the working folder and beside `name`.
+    pub fn from_bytes(bytes: Vec<u8>, name: impl AsRef<Path>) -> Result<Road> {
+        let name = name.as_ref();
+        let (header, data) = reader::read_bytes(bytes, name)?;
+        let data = data.ok_or_else(|| {
+            Error::format(
+                name,
+                Location::File,
+                "data section",
+                "no data section ($$$$ line) in the file or the files it references",
+            )
+        })?;
+        Road::build(header, data)
+    }
+
     fn build(header: Header, data: DataSource) -> Result<Road> {
         let path = data.path.clone();
         let err = |field: &str, msg: String| Error::format(&path, Location::File, field, msg);

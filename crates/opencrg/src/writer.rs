@@ -167,7 +167,14 @@ pub fn write_to(road: &Road, out: &mut impl Write, format: DataFormat) -> io::Re
         for ch in [&l.phi, &l.slope, &l.bank].into_iter().flatten() {
             row.push(ch[iu]);
         }
-        row.extend(g.z[iu * g.nv..(iu + 1) * g.nv].iter().map(|&z| f64::from(z) + g.mean));
+        let mean = g.mean;
+        row.extend(g.z[iu * g.nv..(iu + 1) * g.nv].iter().map(|&z| {
+            if mean == 0.0 {
+                f64::from(z)
+            } else {
+                f64::from(z) + mean
+            }
+        }));
         if format.is_text() {
             text.clear();
             let per_line = 80 / width;
@@ -220,10 +227,10 @@ fn fit(out: &mut String, v: f64, width: usize) {
     }
 }
 
-/// Fixed and exponent renderings of `v` that fit in `width - 1` characters (one
-/// blank stays in front), with their errors.
+/// Fixed and exponent renderings of `v` that fit in `width` characters, with their
+/// errors. Fields may touch: the reader splits by width, not by blanks.
 fn candidates(v: f64, width: usize) -> impl Iterator<Item = (String, f64)> {
-    let room = width - 1;
+    let room = width;
     let mut fixed = (0..room).rev().map(move |p| format!("{v:.p$}"));
     let sci = (0..room).rev().map(move |p| format!("{v:.p$e}"));
     fixed.find(|s| s.len() <= room).into_iter().chain(sci.clone().find(|s| s.len() <= room)).map(move |s| {
