@@ -154,7 +154,7 @@ impl RoadSpec {
                 out.extend_from_slice(&(self.elevation)(u, v).to_be_bytes());
             }
         }
-        while (out.len() - start) % 80 != 0 {
+        while !(out.len() - start).is_multiple_of(80) {
             out.extend_from_slice(&f64::NAN.to_be_bytes());
         }
         out
