@@ -22,8 +22,9 @@ fn same_bits(a: &[f32], b: &[f32]) -> bool {
     a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan()))
 }
 
-fn roundtrip(road: &Road, format: DataFormat) -> Road {
-    let path = temp_path(&format!("road.{}.crg", format.name()));
+/// Writes and reads back; `tag` keeps the files of tests running in parallel apart.
+fn roundtrip(road: &Road, format: DataFormat, tag: &str) -> Road {
+    let path = temp_path(&format!("road.{tag}.{}.crg", format.name()));
     opencrg::write(road, &path, format).unwrap();
     Road::load(&path).unwrap_or_else(|e| panic!("{}: {e}", format.name()))
 }
@@ -33,7 +34,7 @@ fn binary_formats_are_bit_exact() {
     for spec in [curved_banked_sloped(), curved_banked_sloped().with_sections(vec![-2.0, -1.0, -0.25, 0.0, 0.5, 2.0])] {
         let road = spec.build().unwrap();
         for format in [DataFormat::Kdbi, DataFormat::Krbi] {
-            let back = roundtrip(&road, format);
+            let back = roundtrip(&road, format, "binary");
             let (za, zb) = (&road.grid().z, &back.grid().z);
             let first =
                 za.iter().zip(zb.iter()).position(|(x, y)| x.to_bits() != y.to_bits() && !(x.is_nan() && y.is_nan()));
@@ -68,7 +69,7 @@ fn binary_formats_are_bit_exact() {
 fn text_formats_keep_their_precision() {
     let road = curved_banked_sloped().build().unwrap();
     for (format, tol) in [(DataFormat::Lrfi, 1e-7f64), (DataFormat::Ldfi, 1e-12)] {
-        let back = roundtrip(&road, format);
+        let back = roundtrip(&road, format, "text");
         let (a, b) = (&road.grid().z, &back.grid().z);
         assert_eq!(a.len(), b.len());
         for (x, y) in a.iter().zip(b) {
@@ -89,7 +90,7 @@ fn text_formats_keep_their_precision() {
 #[test]
 fn evaluation_survives_the_roundtrip() {
     let road = std::sync::Arc::new(curved_banked_sloped().build().unwrap());
-    let back = std::sync::Arc::new(roundtrip(&road, DataFormat::Kdbi));
+    let back = std::sync::Arc::new(roundtrip(&road, DataFormat::Kdbi, "eval"));
     let a = opencrg::ContactPoint::new(road);
     let b = opencrg::ContactPoint::new(back);
     for i in 0..50 {
