@@ -118,7 +118,8 @@ impl ContactPoint {
     /// Elevation at (u, v); an error where a border mode of none refuses.
     pub fn uv_to_z(&self, u: f64, v: f64) -> Result<f64> {
         finite(u, v)?;
-        eval::uv_to_z(&self.road, &self.options, u, v).ok_or(Error::Eval("outside the road with border mode none"))
+        eval::uv_to_z(&self.road, &self.options, u, v)
+            .ok_or_else(|| Error::Eval("outside the road with border mode none"))
     }
 
     /// Heading and curvature at (u, v).

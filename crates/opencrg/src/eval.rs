@@ -48,38 +48,10 @@ pub fn uv_to_xy(road: &Road, options: &Settings, u: f64, v: f64) -> (f64, f64) {
         let du = (frac - 1.0) * l.u_inc;
         return (l.x_last + du * t.last_cos - v * t.last_sin, l.y_last + du * t.last_sin + v * t.last_cos);
     }
-    let (xs, ys) = (&l.x, &l.y);
-    let p1 = (xs[i], ys[i]);
-    let p2 = (xs[i + 1], ys[i + 1]);
-    let n12 = normalized(-(p2.1 - p1.1), p2.0 - p1.0);
-    let n1 = if i > 0 { normalized(-(p2.1 - ys[i - 1]), p2.0 - xs[i - 1]) } else { n12 };
-    let n2 = if i + 2 < l.n { normalized(-(ys[i + 2] - p1.1), xs[i + 2] - p1.0) } else { n12 };
-    let n1 = stretch(n1, n12);
-    let n2 = stretch(n2, n12);
-    let a = (p1.0 + v * n1.0, p1.1 + v * n1.1);
-    let b = (p2.0 + v * n2.0, p2.1 + v * n2.1);
+    let [n1x, n1y, n2x, n2y] = l.normals[i];
+    let a = (l.x[i] + v * n1x, l.y[i] + v * n1y);
+    let b = (l.x[i + 1] + v * n2x, l.y[i + 1] + v * n2y);
     (a.0 + frac * (b.0 - a.0), a.1 + frac * (b.1 - a.1))
-}
-
-#[inline]
-fn normalized(x: f64, y: f64) -> (f64, f64) {
-    let len = (x * x + y * y).sqrt();
-    if len < 1e-10 {
-        (x, y)
-    } else {
-        (x / len, y / len)
-    }
-}
-
-/// Scales a point normal so its component along the segment normal is 1.
-#[inline]
-fn stretch(n: (f64, f64), n12: (f64, f64)) -> (f64, f64) {
-    let dot = n.0 * n12.0 + n.1 * n12.1;
-    if dot.abs() > 1e-10 {
-        (n.0 / dot, n.1 / dot)
-    } else {
-        n
-    }
 }
 
 /// Where a coordinate lies after the border mode is applied.
@@ -358,7 +330,7 @@ pub fn uv_to_pk(road: &Road, options: &Settings, u: f64, v: f64) -> (f64, f64) {
     let l = &road.line;
     let u = wrap_closed_u(l, options, u);
     let (iu, _) = l.interval(u);
-    let nu = ((0.5 / l.u_inc) as usize).max(1);
+    let nu = l.curvature_step();
     let phi_len = l.phi.as_ref().map_or(0, Vec::len);
     if nu > iu {
         return (l.phi_first, 0.0);
@@ -366,7 +338,7 @@ pub fn uv_to_pk(road: &Road, options: &Settings, u: f64, v: f64) -> (f64, f64) {
     if iu + nu >= phi_len {
         return (l.phi_last, 0.0);
     }
-    let mut curv = l.curvature_at(iu, nu);
+    let mut curv = l.curvature[iu];
     if options.has_int(opt::CURV_MODE, 0) && curv.abs() > 1e-10 {
         let radius = 1.0 / curv - v;
         curv = if radius.abs() < 1e-6 { 1e6 } else { 1.0 / radius };

@@ -184,6 +184,7 @@ impl Road {
         } else {
             self.grid.mean += dz;
         }
+        self.line.update_caches();
         self.index = SampleIndex::build(&self.line);
     }
 }

@@ -72,6 +72,10 @@ pub struct RefLine {
     pub(crate) trig: Trig,
     /// u range over which the line can be closed into a loop.
     pub closed: Option<(f64, f64)>,
+    /// Per segment: the scaled normals at its start and end point (see [`RefLine::update_caches`]).
+    pub(crate) normals: Vec<[f64; 4]>,
+    /// Per cross section: the reference line curvature over 0.5 m (see [`RefLine::curvature_step`]).
+    pub(crate) curvature: Vec<f64>,
 }
 
 /// Cached sines and cosines of the end headings.
@@ -174,6 +178,8 @@ impl RefLine {
             },
             trig: Trig::default(),
             closed: None,
+            normals: Vec::new(),
+            curvature: Vec::new(),
         })
     }
 
@@ -306,6 +312,32 @@ impl RefLine {
         (i, f - i as f64)
     }
 
+    /// Number of cross sections spanning 0.5 m (at least 1): the step of the curvature estimate.
+    pub(crate) fn curvature_step(&self) -> usize {
+        ((0.5 / self.u_inc) as usize).max(1)
+    }
+
+    /// Recomputes what evaluation reads per segment and per cross section, from the
+    /// current x/y: the normals at both ends of every segment, scaled so their
+    /// component along the segment's own normal is 1 (v is measured along them), and
+    /// the curvature at every cross section. The formulas are those evaluation used
+    /// to apply per call, so the answers are bit for bit the same.
+    pub(crate) fn update_caches(&mut self) {
+        let (xs, ys, n) = (&self.x, &self.y, self.n);
+        self.normals = (0..n - 1)
+            .map(|i| {
+                let (p1, p2) = ((xs[i], ys[i]), (xs[i + 1], ys[i + 1]));
+                let n12 = normalized(-(p2.1 - p1.1), p2.0 - p1.0);
+                let n1 = if i > 0 { normalized(-(p2.1 - ys[i - 1]), p2.0 - xs[i - 1]) } else { n12 };
+                let n2 = if i + 2 < n { normalized(-(ys[i + 2] - p1.1), xs[i + 2] - p1.0) } else { n12 };
+                let (a, b) = (stretch(n1, n12), stretch(n2, n12));
+                [a.0, a.1, b.0, b.1]
+            })
+            .collect();
+        let k = self.curvature_step();
+        self.curvature = (0..n).map(|i| if i >= k && i + k < n { self.curvature_at(i, k) } else { 0.0 }).collect();
+    }
+
     /// Curvature at cross section `i` from the points `i - k`, `i`, `i + k`.
     #[inline]
     pub(crate) fn curvature_at(&self, i: usize, k: usize) -> f64 {
@@ -315,5 +347,26 @@ impl RefLine {
         let dy0 = self.y[i] - self.y[i - k];
         let dy1 = self.y[i + k] - self.y[i];
         (dx0 * dy1 - dy0 * dx1) * hd
+    }
+}
+
+#[inline]
+fn normalized(x: f64, y: f64) -> (f64, f64) {
+    let len = (x * x + y * y).sqrt();
+    if len < 1e-10 {
+        (x, y)
+    } else {
+        (x / len, y / len)
+    }
+}
+
+/// Scales a point normal so its component along the segment normal is 1.
+#[inline]
+fn stretch(n: (f64, f64), n12: (f64, f64)) -> (f64, f64) {
+    let dot = n.0 * n12.0 + n.1 * n12.1;
+    if dot.abs() > 1e-10 {
+        (n.0 / dot, n.1 / dot)
+    } else {
+        n
     }
 }

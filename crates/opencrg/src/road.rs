@@ -214,6 +214,7 @@ impl Road {
         self.line.integrate_z();
         self.grid.fold_mean();
         self.line.update_utility();
+        self.line.update_caches();
         self.index = SampleIndex::build(&self.line);
     }
 

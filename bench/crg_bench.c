@@ -1,0 +1,140 @@
+/*
+ * Benchmark of the classic OpenCRG C API, to be linked against any library that
+ * offers it (this project's or the reference's, built with the same compiler).
+ *
+ * usage: crg_bench load FILE             load time and peak memory (one load per process)
+ *        crg_bench eval FILE N THREADS   queries per second of every call
+ * Prints one "name value unit" line per figure.
+ */
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <time.h>
+#include <math.h>
+#include "crgBaseLib.h"
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+static long peak_kb(void)
+{
+    struct rusage r;
+    getrusage(RUSAGE_SELF, &r);
+    return r.ru_maxrss;
+}
+
+/* A small deterministic generator, so both libraries get the same points. */
+static unsigned long long g_state = 88172645463325252ULL;
+static double rnd(void)
+{
+    g_state ^= g_state << 13;
+    g_state ^= g_state >> 7;
+    g_state ^= g_state << 17;
+    return (g_state >> 11) * (1.0 / 9007199254740992.0);
+}
+
+static double uMin, uMax, vMin, vMax;
+static int g_id;
+static long g_n;
+static double *g_u, *g_v, *g_x, *g_y;
+/* Each thread accumulates into its own sink, so threads share no written memory. */
+static __thread double g_sink;
+static volatile double g_keep;
+
+typedef int (*Query)(int cp, long i);
+
+static int q_uv2z(int cp, long i) { double z; int r = crgEvaluv2z(cp, g_u[i], g_v[i], &z); g_sink += z; return r; }
+static int q_uv2pk(int cp, long i) { double p, k; int r = crgEvaluv2pk(cp, g_u[i], g_v[i], &p, &k); g_sink += p + k; return r; }
+static int q_uv2xy(int cp, long i) { double x, y; int r = crgEvaluv2xy(cp, g_u[i], g_v[i], &x, &y); g_sink += x + y; return r; }
+static int q_xy2uv(int cp, long i) { double u, v; int r = crgEvalxy2uv(cp, g_x[i], g_y[i], &u, &v); g_sink += u + v; return r; }
+static int q_xy2z(int cp, long i) { double z; int r = crgEvalxy2z(cp, g_x[i], g_y[i], &z); g_sink += z; return r; }
+
+static double run(Query q, int cp, long n)
+{
+    double t0 = now();
+    for (long i = 0; i < n; i++)
+        q(cp, i);
+    double qps = n / (now() - t0);
+    g_keep = g_sink;
+    return qps;
+}
+
+struct Job { int cp; long n; double qps; };
+static void *thread_main(void *arg)
+{
+    struct Job *j = arg;
+    j->qps = run(q_uv2z, j->cp, j->n);
+    return NULL;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 3) {
+        fprintf(stderr, "usage: crg_bench load FILE | eval FILE N THREADS\n");
+        return 2;
+    }
+    crgMsgSetLevel(dCrgMsgLevelNone);
+    long before = peak_kb();
+    double t0 = now();
+    g_id = crgLoaderReadFile(argv[2]);
+    if (g_id <= 0) {
+        fprintf(stderr, "cannot load %s\n", argv[2]);
+        return 1;
+    }
+    crgDataSetModifiersApply(g_id);
+    double t_load = now() - t0;
+    if (!strcmp(argv[1], "load")) {
+        printf("load_s %.3f s\npeak_rss_mb %.1f MB\nrss_before_mb %.1f MB\n", t_load, peak_kb() / 1024.0, before / 1024.0);
+        return 0;
+    }
+    g_n = argc > 3 ? atol(argv[3]) : 1000000;
+    int threads = argc > 4 ? atoi(argv[4]) : 1;
+    crgDataSetGetURange(g_id, &uMin, &uMax);
+    crgDataSetGetVRange(g_id, &vMin, &vMax);
+    g_u = malloc(sizeof(double) * g_n); g_v = malloc(sizeof(double) * g_n);
+    g_x = malloc(sizeof(double) * g_n); g_y = malloc(sizeof(double) * g_n);
+    int cp = crgContactPointCreate(g_id);
+    for (long i = 0; i < g_n; i++) {
+        g_u[i] = uMin + (uMax - uMin) * rnd();
+        g_v[i] = vMin + (vMax - vMin) * rnd();
+        crgEvaluv2xy(cp, g_u[i], g_v[i], &g_x[i], &g_y[i]);
+    }
+    printf("uv2z_random %.0f q/s\n", run(q_uv2z, cp, g_n));
+    printf("uv2pk_random %.0f q/s\n", run(q_uv2pk, cp, g_n));
+    printf("uv2xy_random %.0f q/s\n", run(q_uv2xy, cp, g_n));
+    /* x/y to u/v on random points with no history: every query searches afresh */
+    int cp0 = crgContactPointCreate(g_id);
+    crgContactPointSetHistory(cp0, 0);
+    long nr = g_n / 10;
+    printf("xy2uv_random_nohistory %.0f q/s\n", run(q_xy2uv, cp0, nr));
+    /* a vehicle path: u increasing, v weaving, x/y looked up with history */
+    for (long i = 0; i < g_n; i++) {
+        double u = uMin + (uMax - uMin) * i / g_n, v = 0.4 * (vMax - vMin) * sin(i * 1e-3);
+        crgEvaluv2xy(cp, u, v, &g_x[i], &g_y[i]);
+    }
+    printf("xy2z_path %.0f q/s\n", run(q_xy2z, cp, g_n));
+    if (threads > 1) {
+        pthread_t t[64];
+        struct Job jobs[64];
+        double total = 0;
+        if (threads > 64) threads = 64;
+        for (int k = 0; k < threads; k++) {
+            jobs[k].cp = crgContactPointCreate(g_id);
+            jobs[k].n = g_n;
+            pthread_create(&t[k], NULL, thread_main, &jobs[k]);
+        }
+        for (int k = 0; k < threads; k++) {
+            pthread_join(t[k], NULL);
+            total += jobs[k].qps;
+        }
+        printf("uv2z_random_%dthreads %.0f q/s\n", threads, total);
+    }
+    crgMemRelease();
+    return 0;
+}
