@@ -118,8 +118,11 @@ impl ContactPoint {
     /// Elevation at (u, v); an error where a border mode of none refuses.
     pub fn uv_to_z(&self, u: f64, v: f64) -> Result<f64> {
         finite(u, v)?;
-        eval::uv_to_z(&self.road, &self.options, u, v)
-            .ok_or_else(|| Error::Eval("outside the road with border mode none"))
+        // A match, not `ok_or`: building (and dropping) an unused error costs in this hot path.
+        match eval::uv_to_z(&self.road, &self.options, u, v) {
+            Some(z) => Ok(z),
+            None => Err(Error::Eval("outside the road with border mode none")),
+        }
     }
 
     /// Heading and curvature at (u, v).
