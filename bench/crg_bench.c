@@ -55,14 +55,20 @@ static int q_uv2xy(int cp, long i) { double x, y; int r = crgEvaluv2xy(cp, g_u[i
 static int q_xy2uv(int cp, long i) { double u, v; int r = crgEvalxy2uv(cp, g_x[i], g_y[i], &u, &v); g_sink += u + v; return r; }
 static int q_xy2z(int cp, long i) { double z; int r = crgEvalxy2z(cp, g_x[i], g_y[i], &z); g_sink += z; return r; }
 
+/* Best of three passes: this machine's timing noise only ever slows a pass down. */
 static double run(Query q, int cp, long n)
 {
-    double t0 = now();
-    for (long i = 0; i < n; i++)
-        q(cp, i);
-    double qps = n / (now() - t0);
+    double best = 0.0;
+    for (int pass = 0; pass < 3; pass++) {
+        double t0 = now();
+        for (long i = 0; i < n; i++)
+            q(cp, i);
+        double qps = n / (now() - t0);
+        if (qps > best)
+            best = qps;
+    }
     g_keep = g_sink;
-    return qps;
+    return best;
 }
 
 struct Job { int cp; long n; double qps; };

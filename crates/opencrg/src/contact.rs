@@ -1,7 +1,7 @@
 //! Contact points: a road, a set of options and a search history.
 
 use crate::error::{Error, Result};
-use crate::eval;
+use crate::eval::{self, EvalOptions};
 use crate::road::Road;
 use crate::search::{self, History, DEFAULT_HISTORY};
 use crate::settings::{opt, Settings};
@@ -19,6 +19,7 @@ const DEFAULT_FAR: f64 = 2.2;
 pub struct ContactPoint {
     road: Arc<Road>,
     options: Settings,
+    eval: EvalOptions,
     history: History,
 }
 
@@ -35,7 +36,8 @@ impl ContactPoint {
     pub fn new(road: Arc<Road>) -> Self {
         let options = road.options().clone();
         let history = History::new(DEFAULT_HISTORY, DEFAULT_CLOSE * DEFAULT_CLOSE, DEFAULT_FAR * DEFAULT_FAR);
-        ContactPoint { road, options, history }
+        let eval = EvalOptions::from(&options);
+        ContactPoint { road, options, eval, history }
     }
 
     /// The road evaluated.
@@ -56,7 +58,9 @@ impl ContactPoint {
 
     /// Sets an integer option.
     pub fn set_option_int(&mut self, id: u32, value: i32) -> Result<()> {
-        Ok(self.options.set_int(id, value)?)
+        self.options.set_int(id, value)?;
+        self.eval = EvalOptions::from(&self.options);
+        Ok(())
     }
 
     /// Sets a double option. The search options act at once: `REFLINE_SEARCH_U` and
@@ -73,22 +77,28 @@ impl ContactPoint {
             opt::REFLINE_FAR => self.history.set_far(value),
             _ => {}
         }
-        Ok(self.options.set_double(id, value)?)
+        self.options.set_double(id, value)?;
+        self.eval = EvalOptions::from(&self.options);
+        Ok(())
     }
 
     /// Removes one option (the evaluation then behaves as with the option absent).
     pub fn remove_option(&mut self, id: u32) -> bool {
-        self.options.remove(id)
+        let removed = self.options.remove(id);
+        self.eval = EvalOptions::from(&self.options);
+        removed
     }
 
     /// Removes every option.
     pub fn clear_options(&mut self) {
         self.options.clear();
+        self.eval = EvalOptions::from(&self.options);
     }
 
     /// Restores the library's default options and search distances.
     pub fn reset_options(&mut self) {
         self.options.reset_options();
+        self.eval = EvalOptions::from(&self.options);
         let _ = self.set_option_double(opt::REFLINE_CLOSE, DEFAULT_CLOSE);
         let _ = self.set_option_double(opt::REFLINE_FAR, DEFAULT_FAR);
     }
@@ -112,14 +122,14 @@ impl ContactPoint {
     /// x/y of (u, v).
     pub fn uv_to_xy(&self, u: f64, v: f64) -> Result<(f64, f64)> {
         finite(u, v)?;
-        Ok(eval::uv_to_xy(&self.road, &self.options, u, v))
+        Ok(eval::uv_to_xy(&self.road, &self.eval, u, v))
     }
 
     /// Elevation at (u, v); an error where a border mode of none refuses.
     pub fn uv_to_z(&self, u: f64, v: f64) -> Result<f64> {
         finite(u, v)?;
         // A match, not `ok_or`: building (and dropping) an unused error costs in this hot path.
-        match eval::uv_to_z(&self.road, &self.options, u, v) {
+        match eval::uv_to_z(&self.road, &self.eval, u, v) {
             Some(z) => Ok(z),
             None => Err(Error::Eval("outside the road with border mode none")),
         }
@@ -128,14 +138,14 @@ impl ContactPoint {
     /// Heading and curvature at (u, v).
     pub fn uv_to_pk(&self, u: f64, v: f64) -> Result<(f64, f64)> {
         finite(u, v)?;
-        Ok(eval::uv_to_pk(&self.road, &self.options, u, v))
+        Ok(eval::uv_to_pk(&self.road, &self.eval, u, v))
     }
 
     /// (u, v) of the point (x, y).
     pub fn xy_to_uv(&mut self, x: f64, y: f64) -> Result<(f64, f64)> {
         finite(x, y)?;
         let road = &*self.road;
-        Ok(search::xy_to_uv(&road.line, &road.index, &self.options, &mut self.history, x, y))
+        Ok(search::xy_to_uv(&road.line, &road.index, &self.eval, &mut self.history, x, y))
     }
 
     /// Elevation at the point (x, y).

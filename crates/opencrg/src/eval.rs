@@ -19,12 +19,45 @@ const REFLECT: i32 = 4;
 /// Tolerance within which a v just outside an uneven grid counts as on its border.
 const V_BORDER_SNAP: f64 = 1e-8;
 
+/// The options evaluation reads, taken out of a settings table once so that the
+/// hot path reads plain fields.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EvalOptions {
+    border_u: i32,
+    border_v: i32,
+    offset_u: f64,
+    offset_v: f64,
+    smooth_begin: Option<f64>,
+    smooth_end: Option<f64>,
+    curv_lateral: bool,
+    close_track: bool,
+    /// The reference library's x/y search tests option id 1 (the u border mode) for
+    /// the value 1 to choose its closed-track branch; kept for the same answers.
+    pub(crate) closed_search: bool,
+}
+
+impl From<&Settings> for EvalOptions {
+    fn from(o: &Settings) -> Self {
+        EvalOptions {
+            border_u: o.get_int(opt::BORDER_MODE_U).unwrap_or(NONE),
+            border_v: o.get_int(opt::BORDER_MODE_V).unwrap_or(EX_KEEP),
+            offset_u: o.get_double(opt::BORDER_OFFSET_U).unwrap_or(0.0),
+            offset_v: o.get_double(opt::BORDER_OFFSET_V).unwrap_or(0.0),
+            smooth_begin: o.get_double(opt::SMOOTH_U_BEGIN),
+            smooth_end: o.get_double(opt::SMOOTH_U_END),
+            curv_lateral: o.has_int(opt::CURV_MODE, 0),
+            close_track: o.has_int(opt::REFLINE_CONTINUE, 1),
+            closed_search: o.has_int(opt::BORDER_MODE_U, 1),
+        }
+    }
+}
+
 /// Maps u into the closed-track range when the line can be closed and the option
 /// `REFLINE_CONTINUATION` asks for it.
 #[inline]
-pub(crate) fn wrap_closed_u(line: &RefLine, options: &Settings, u: f64) -> f64 {
+pub(crate) fn wrap_closed_u(line: &RefLine, options: &EvalOptions, u: f64) -> f64 {
     if let Some((min, max)) = line.closed {
-        if (u < min || u > max) && options.has_int(opt::REFLINE_CONTINUE, 1) {
+        if (u < min || u > max) && options.close_track {
             let w = (u - min) % (max - min);
             return if w > 0.0 { w + min } else { w + max };
         }
@@ -35,7 +68,7 @@ pub(crate) fn wrap_closed_u(line: &RefLine, options: &Settings, u: f64) -> f64 {
 /// x/y of the point at (u, v). Beyond the ends the line continues straight along
 /// the end headings; inside, v is measured along normals blended between the
 /// neighbouring segments.
-pub fn uv_to_xy(road: &Road, options: &Settings, u: f64, v: f64) -> (f64, f64) {
+pub fn uv_to_xy(road: &Road, options: &EvalOptions, u: f64, v: f64) -> (f64, f64) {
     let l = &road.line;
     let u = wrap_closed_u(l, options, u);
     let (i, frac) = l.interval(u);
@@ -66,7 +99,7 @@ struct Axis {
 /// Returns the axis, the possibly moved u, whether grid values and banking count,
 /// which end the smoothing base comes from, and the border offset.
 #[inline]
-fn resolve_u(l: &RefLine, options: &Settings, mut u: f64) -> Option<(Axis, f64, bool, u8, f64)> {
+fn resolve_u(l: &RefLine, options: &EvalOptions, mut u: f64) -> Option<(Axis, f64, bool, u8, f64)> {
     let mut frac = (u - l.u_first) / l.u_inc;
     let mut mode = NONE;
     let mut in_core = true;
@@ -76,7 +109,7 @@ fn resolve_u(l: &RefLine, options: &Settings, mut u: f64) -> Option<(Axis, f64, 
     let mut index_from_frac = true;
     if u < l.u_first || u > l.u_last {
         in_core = false;
-        mode = options.get_int(opt::BORDER_MODE_U).unwrap_or(NONE);
+        mode = options.border_u;
         let size = l.u_last - l.u_first;
         let max_frac = size / l.u_inc;
         match mode {
@@ -110,7 +143,7 @@ fn resolve_u(l: &RefLine, options: &Settings, mut u: f64) -> Option<(Axis, f64, 
             }
             _ => {}
         }
-        offset = options.get_double(opt::BORDER_OFFSET_U).unwrap_or(0.0);
+        offset = options.offset_u;
     }
     let index = if index_from_frac { clamp_index(&mut frac, l.n) } else { 0 };
     Some((Axis { index, frac, in_core, mode }, u, with_values, smooth_end, offset))
@@ -135,20 +168,90 @@ fn clamp_index(frac: &mut f64, n: usize) -> usize {
     if *frac < 0.0 {
         *frac = 0.0;
     }
-    let i = *frac as usize;
-    if i >= n - 1 {
+    if *frac >= (n - 1) as f64 {
         *frac = 1.0;
         n - 2
     } else {
+        // In [0, n - 1): the signed conversion is exact and much cheaper than `as usize`.
+        let i = *frac as i64 as usize;
         *frac -= i as f64;
         i
     }
 }
 
+/// The surface at interval (iu, fu) x (iv, fv): grid value (when `with_values`),
+/// reference line z, and banking times `v_bank`.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn surface(
+    road: &Road,
+    iu: usize,
+    fu: f64,
+    iv: usize,
+    fv: f64,
+    v_bank: f64,
+    with_values: bool,
+    with_bank: bool,
+) -> f64 {
+    let (l, g) = (&road.line, &road.grid);
+    let mut z = 0.0;
+    if with_values {
+        let row = &g.z[iu * g.nv..(iu + 2) * g.nv];
+        let next = g.nv;
+        let z00 = f64::from(row[iv]);
+        let z10 = f64::from(row[next + iv]) - z00;
+        let mut z01 = f64::from(row[iv + 1]);
+        let z11 = f64::from(row[next + iv + 1]) - (z10 + z01);
+        z01 -= z00;
+        z = (z11 * fv + z10) * fu + z01 * fv + z00;
+        z += g.mean;
+    }
+    let fu = fu.clamp(0.0, 1.0);
+    z += match &l.z {
+        Some(rz) => rz[iu] + fu * (rz[iu + 1] - rz[iu]),
+        None => l.z_first,
+    };
+    if l.has_bank && with_bank {
+        let bank = match &l.bank {
+            Some(b) => b[iu] + fu * (b[iu + 1] - b[iu]),
+            None => l.bank_first,
+        };
+        z += bank * v_bank;
+    }
+    z
+}
+
+/// The v interval of an uneven grid holding `pos`, and the fraction within it.
+#[inline(always)]
+fn explicit_v(g: &crate::grid::Grid, pos: f64) -> (usize, f64) {
+    let i = g.v_interval(pos);
+    (i, ((pos - g.v[i]) / (g.v[i + 1] - g.v[i])).clamp(0.0, 1.0))
+}
+
 /// Elevation at (u, v) with the given options; `None` when a border mode refuses.
-pub fn uv_to_z(road: &Road, options: &Settings, u: f64, v: f64) -> Option<f64> {
+pub fn uv_to_z(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<f64> {
     let l = &road.line;
     let g = &road.grid;
+    // Inside the data and without smoothing zones no option matters (and u inside the
+    // data is inside any closed-track range): the straight way, same formulas.
+    if options.smooth_begin.is_none()
+        && options.smooth_end.is_none()
+        && u >= l.u_first
+        && u <= l.u_last
+        && v >= g.v_first
+        && v <= g.v_last
+    {
+        let mut fu = (u - l.u_first) / l.u_inc;
+        let iu = clamp_index(&mut fu, l.n);
+        let (iv, fv) = match g.layout {
+            VLayout::Indexed => {
+                let mut fv = (v - g.v_first) / g.v_inc;
+                (clamp_index(&mut fv, g.nv), fv)
+            }
+            VLayout::Explicit => explicit_v(g, v),
+        };
+        return Some(surface(road, iu, fu, iv, fv, v, true, true));
+    }
     let u = wrap_closed_u(l, options, u);
     let (ua, u, mut with_values, mut smooth_end, mut z_offset) = resolve_u(l, options, u)?;
     let with_bank = with_values;
@@ -163,7 +266,7 @@ pub fn uv_to_z(road: &Road, options: &Settings, u: f64, v: f64) -> Option<f64> {
             let mut index_from_frac = true;
             if v < g.v_first || v > g.v_last {
                 v_in_core = false;
-                v_mode = options.get_int(opt::BORDER_MODE_V).unwrap_or(EX_KEEP);
+                v_mode = options.border_v;
                 let size = g.v_last - g.v_first;
                 let max_frac = size / g.v_inc;
                 match v_mode {
@@ -189,7 +292,7 @@ pub fn uv_to_z(road: &Road, options: &Settings, u: f64, v: f64) -> Option<f64> {
                     }
                     _ => {}
                 }
-                z_offset += options.get_double(opt::BORDER_OFFSET_V).unwrap_or(0.0);
+                z_offset += options.offset_v;
             }
             iv = if index_from_frac { clamp_index(&mut frac, g.nv) } else { 0 };
             fv = frac;
@@ -203,7 +306,7 @@ pub fn uv_to_z(road: &Road, options: &Settings, u: f64, v: f64) -> Option<f64> {
                 } else if (pos - g.v_last).abs() < V_BORDER_SNAP {
                     pos = g.v_last;
                 } else {
-                    v_mode = options.get_int(opt::BORDER_MODE_V).unwrap_or(EX_KEEP);
+                    v_mode = options.border_v;
                     match v_mode {
                         NONE => return None,
                         EX_ZERO => with_values = false,
@@ -235,30 +338,24 @@ pub fn uv_to_z(road: &Road, options: &Settings, u: f64, v: f64) -> Option<f64> {
                     }
                     v_in_core = true;
                 }
-                z_offset += options.get_double(opt::BORDER_OFFSET_V).unwrap_or(0.0);
+                z_offset += options.offset_v;
             }
-            let i = g.v_interval(pos);
-            iv = i;
-            fv = ((pos - g.v[i]) / (g.v[i + 1] - g.v[i])).clamp(0.0, 1.0);
+            (iv, fv) = explicit_v(g, pos);
         }
     }
 
     let iu = ua.index;
-    let mut fu = ua.frac;
-    let mut z = 0.0;
-    if with_values {
-        let z00 = f64::from(g.at(iu, iv));
-        let z10 = f64::from(g.at(iu + 1, iv)) - z00;
-        let mut z01 = f64::from(g.at(iu, iv + 1));
-        let z11 = f64::from(g.at(iu + 1, iv + 1)) - (z10 + z01);
-        z01 -= z00;
-        z = (z11 * fv + z10) * fu + z01 * fv + z00;
-        z += g.mean;
-    }
+    let vb = if v < g.v_first {
+        g.v_first
+    } else if v > g.v_last {
+        g.v_last
+    } else {
+        v
+    };
+    let mut z = surface(road, iu, ua.frac, iv, fv, vb, with_values, with_bank);
 
     let mut smooth = None;
-    let begin = options.get_double(opt::SMOOTH_U_BEGIN);
-    let end = options.get_double(opt::SMOOTH_U_END);
+    let (begin, end) = (options.smooth_begin, options.smooth_end);
     let mut smooth_base = 0.0;
     if begin.is_some() || end.is_some() {
         if ua.in_core || smooth_end != 0 {
@@ -284,26 +381,6 @@ pub fn uv_to_z(road: &Road, options: &Settings, u: f64, v: f64) -> Option<f64> {
         };
     }
 
-    fu = fu.clamp(0.0, 1.0);
-    z += match &l.z {
-        Some(rz) => rz[iu] + fu * (rz[iu + 1] - rz[iu]),
-        None => l.z_first,
-    };
-    if l.has_bank && with_bank {
-        let bank = match &l.bank {
-            Some(b) => b[iu] + fu * (b[iu + 1] - b[iu]),
-            None => l.bank_first,
-        };
-        let vb = if v < g.v_first {
-            g.v_first
-        } else if v > g.v_last {
-            g.v_last
-        } else {
-            v
-        };
-        z += bank * vb;
-    }
-
     if !ua.in_core {
         match ua.mode {
             EX_ZERO => z = z_offset,
@@ -326,7 +403,7 @@ pub fn uv_to_z(road: &Road, options: &Settings, u: f64, v: f64) -> Option<f64> {
 /// Heading and curvature at (u, v). The heading is that of the reference line
 /// segment holding u; the curvature comes from points 0.5 m apart (at least one
 /// increment) and, in lateral curvature mode, is that of the parallel at v.
-pub fn uv_to_pk(road: &Road, options: &Settings, u: f64, v: f64) -> (f64, f64) {
+pub fn uv_to_pk(road: &Road, options: &EvalOptions, u: f64, v: f64) -> (f64, f64) {
     let l = &road.line;
     let u = wrap_closed_u(l, options, u);
     let (iu, _) = l.interval(u);
@@ -339,7 +416,7 @@ pub fn uv_to_pk(road: &Road, options: &Settings, u: f64, v: f64) -> (f64, f64) {
         return (l.phi_last, 0.0);
     }
     let mut curv = l.curvature[iu];
-    if options.has_int(opt::CURV_MODE, 0) && curv.abs() > 1e-10 {
+    if options.curv_lateral && curv.abs() > 1e-10 {
         let radius = 1.0 / curv - v;
         curv = if radius.abs() < 1e-6 { 1e6 } else { 1.0 / radius };
     }

@@ -1,7 +1,7 @@
 //! Applying modifiers: scaling, NaN handling of the grid borders, and relocation of
 //! the road by reference point or by offset and rotation.
 
-use crate::eval;
+use crate::eval::{self, EvalOptions};
 use crate::grid::VLayout;
 use crate::road::Road;
 use crate::search::SampleIndex;
@@ -93,7 +93,7 @@ impl Road {
         if outside_v {
             return 0.0;
         }
-        eval::uv_to_z(self, &Settings::empty_options(), u, v).unwrap_or(0.0)
+        eval::uv_to_z(self, &EvalOptions::from(&Settings::empty_options()), u, v).unwrap_or(0.0)
     }
 
     fn relocate(&mut self, mods: &Settings) {
@@ -129,9 +129,10 @@ impl Road {
         }
 
         let (from, center, angle) = if by_refpoint {
-            let (x, y) = eval::uv_to_xy(self, &self.options, u, v);
-            let z = eval::uv_to_z(self, &self.options, u, v).unwrap_or(0.0);
-            let (phi, _) = eval::uv_to_pk(self, &self.options, u, v);
+            let options = EvalOptions::from(&self.options);
+            let (x, y) = eval::uv_to_xy(self, &options, u, v);
+            let z = eval::uv_to_z(self, &options, u, v).unwrap_or(0.0);
+            let (phi, _) = eval::uv_to_pk(self, &options, u, v);
             ([x, y, z], (x, y), angle - phi)
         } else {
             let from_xy = (l.x_first, l.y_first);

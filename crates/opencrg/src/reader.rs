@@ -218,6 +218,23 @@ impl std::ops::Deref for FileBytes {
     }
 }
 
+impl FileBytes {
+    /// Lets the kernel drop the mapped pages in `start..end` from this process's
+    /// memory: they have been decoded and will not be read again. The file's pages
+    /// stay in the page cache; the mapping is read-only, so nothing can be lost.
+    pub(crate) fn release(&self, start: usize, end: usize) {
+        const PAGE: usize = 4096;
+        if let FileBytes::Mapped(map) = self {
+            let (first, last) = (start.div_ceil(PAGE) * PAGE, end / PAGE * PAGE);
+            if last > first {
+                // SAFETY: DontNeed on a read-only shared file mapping only drops
+                // resident pages; later reads fault them in again from the file.
+                let _ = unsafe { map.unchecked_advise_range(memmap2::UncheckedAdvice::DontNeed, first, last - first) };
+            }
+        }
+    }
+}
+
 /// Where the data section is.
 pub(crate) struct DataSource {
     pub path: PathBuf,

@@ -18,7 +18,8 @@ pub struct Truncated {
     pub channels_read: usize,
 }
 
-/// Calls `sink` with every complete record and returns how many there were.
+/// Calls `sink` with every complete record and the offset just past it, and returns
+/// how many records there were.
 ///
 /// Binary data stops after `max_records` (the count the header declares); text data
 /// runs to the end of the buffer. An incomplete record that is not just trailing
@@ -28,7 +29,7 @@ pub fn decode<E>(
     channels: usize,
     data: &[u8],
     max_records: usize,
-    mut sink: impl FnMut(usize, &[f64]) -> Result<(), E>,
+    mut sink: impl FnMut(usize, &[f64], usize) -> Result<(), E>,
 ) -> Result<Result<usize, Truncated>, E> {
     let mut record = vec![0.0f64; channels];
     if channels == 0 {
@@ -47,8 +48,8 @@ pub fn decode<E>(
         for (value, bytes) in record.iter_mut().zip(chunk.chunks_exact(width)) {
             *value = if width == 4 { f64::from(BigEndian::read_f32(bytes)) } else { BigEndian::read_f64(bytes) };
         }
-        sink(count, &record)?;
         count += 1;
+        sink(count - 1, &record, count * size)?;
     }
     Ok(Ok(count))
 }
@@ -61,7 +62,7 @@ fn decode_text<E>(
     format: DataFormat,
     data: &[u8],
     record: &mut [f64],
-    sink: &mut impl FnMut(usize, &[f64]) -> Result<(), E>,
+    sink: &mut impl FnMut(usize, &[f64], usize) -> Result<(), E>,
 ) -> Result<Result<usize, Truncated>, E> {
     let width = format.field_width();
     let bytes_per_record = width * record.len();
@@ -105,7 +106,7 @@ fn decode_text<E>(
             *value = text_field(&body[at..at + width]);
             at += width;
         }
-        sink(count, record)?;
+        sink(count, record, pos)?;
         count += 1;
     }
 }
@@ -130,7 +131,7 @@ mod tests {
 
     fn collect(format: DataFormat, n: usize, data: &[u8], max: usize) -> (Vec<Vec<f64>>, Result<usize, Truncated>) {
         let mut rows = Vec::new();
-        let r = decode::<()>(format, n, data, max, |_, r| {
+        let r = decode::<()>(format, n, data, max, |_, r, _| {
             rows.push(r.to_vec());
             Ok(())
         })

@@ -308,7 +308,15 @@ impl RefLine {
     #[inline]
     pub(crate) fn interval(&self, u: f64) -> (usize, f64) {
         let f = (u - self.u_first) / self.u_inc;
-        let i = if f < 0.0 { 0 } else { (f as usize).min(self.n - 2) };
+        let last = self.n - 2;
+        let i = if f < 0.0 {
+            0
+        } else if f >= last as f64 {
+            last
+        } else {
+            // In [0, n - 2): the signed conversion is exact and cheaper than `as usize`.
+            f as i64 as usize
+        };
         (i, f - i as f64)
     }
 

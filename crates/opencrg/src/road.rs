@@ -170,8 +170,16 @@ impl Road {
         let mut z: Vec<f32> = Vec::with_capacity(estimate.saturating_mul(nv));
         let mut b = Builder::new(&cols, estimate);
         let section_cols: Vec<usize> = sections.iter().map(|s| s.1).collect();
-        let decoded = records::decode(format, nch, bytes, max_records, |i, rec| {
+        // Decoded pages of a mapped file are handed back as decoding advances, so the
+        // file and the grid are never both resident.
+        const RELEASE_STEP: usize = 8 << 20;
+        let mut released = 0;
+        let decoded = records::decode(format, nch, bytes, max_records, |i, rec, end| {
             z.extend(section_cols.iter().map(|&c| rec[c] as f32));
+            if end - released >= RELEASE_STEP {
+                data.bytes.release(data.offset + released, data.offset + end);
+                released = end;
+            }
             b.push(i, rec)
         })?;
         let nu = match decoded {

@@ -7,8 +7,8 @@
 //! a scan, and gives exactly the sample a linear scan would (ties go to the lowest
 //! index).
 
+use crate::eval::EvalOptions;
 use crate::refline::RefLine;
-use crate::settings::{opt, Settings};
 
 /// Default number of history entries of a contact point.
 pub const DEFAULT_HISTORY: usize = 50;
@@ -113,21 +113,62 @@ impl History {
     }
 }
 
+/// A sample point, with the bounding box of the subtree it heads and the axis that
+/// subtree is split on.
+#[derive(Debug, Clone, Copy)]
+struct Node {
+    x: f64,
+    y: f64,
+    index: usize,
+    y_split: bool,
+    /// x min, x max, y min, y max of the subtree.
+    bbox: [f64; 4],
+}
+
+impl Node {
+    /// A lower bound of the computed squared distance from (x, y) to any point of the
+    /// subtree: the per-axis gaps are no larger than any point's differences, and
+    /// rounding is monotonic, so no point that could win or tie is pruned.
+    #[inline]
+    fn box_distance2(&self, x: f64, y: f64) -> f64 {
+        let [x0, x1, y0, y1] = self.bbox;
+        let dx = if x < x0 {
+            x0 - x
+        } else if x > x1 {
+            x - x1
+        } else {
+            0.0
+        };
+        let dy = if y < y0 {
+            y0 - y
+        } else if y > y1 {
+            y - y1
+        } else {
+            0.0
+        };
+        dx * dx + dy * dy
+    }
+}
+
 /// Nearest-sample index over every tenth reference line point (and the last one).
 #[derive(Debug, Clone, Default)]
 pub struct SampleIndex {
-    /// Points in k-d tree order: the median of each range splits it.
-    nodes: Vec<(f64, f64, usize)>,
+    /// Points in k-d tree order: the median of each range splits it, along the
+    /// range's longer side (reference lines are long and thin, so alternating
+    /// axes would prune badly).
+    nodes: Vec<Node>,
 }
 
 impl SampleIndex {
     /// Builds the index for a reference line.
     pub fn build(line: &RefLine) -> Self {
-        let mut nodes: Vec<(f64, f64, usize)> = sample_indices(line.n).map(|i| (line.x[i], line.y[i], i)).collect();
-        if nodes.iter().any(|p| p.0.is_nan() || p.1.is_nan()) {
+        let mut nodes: Vec<Node> = sample_indices(line.n)
+            .map(|i| Node { x: line.x[i], y: line.y[i], index: i, y_split: false, bbox: [0.0; 4] })
+            .collect();
+        if nodes.iter().any(|p| p.x.is_nan() || p.y.is_nan()) {
             return SampleIndex { nodes: Vec::new() };
         }
-        arrange(&mut nodes, 0);
+        arrange(&mut nodes);
         SampleIndex { nodes }
     }
 
@@ -137,7 +178,7 @@ impl SampleIndex {
             return scan_nearest(line, x, y);
         }
         let mut best = (f64::INFINITY, usize::MAX);
-        search(&self.nodes, 0, x, y, &mut best);
+        search(&self.nodes, x, y, &mut best);
         if best.1 == usize::MAX {
             0
         } else {
@@ -176,40 +217,46 @@ fn scan_nearest(line: &RefLine, x: f64, y: f64) -> usize {
     best.1
 }
 
-fn arrange(nodes: &mut [(f64, f64, usize)], depth: usize) {
-    if nodes.len() <= 1 {
+fn arrange(nodes: &mut [Node]) {
+    if nodes.is_empty() {
         return;
     }
-    let mid = nodes.len() / 2;
-    if depth.is_multiple_of(2) {
-        nodes.select_nth_unstable_by(mid, |a, b| a.0.total_cmp(&b.0));
-    } else {
-        nodes.select_nth_unstable_by(mid, |a, b| a.1.total_cmp(&b.1));
+    let mut bbox = [f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY];
+    for n in nodes.iter() {
+        bbox = [bbox[0].min(n.x), bbox[1].max(n.x), bbox[2].min(n.y), bbox[3].max(n.y)];
     }
+    let y_split = bbox[3] - bbox[2] > bbox[1] - bbox[0];
+    let mid = nodes.len() / 2;
+    if y_split {
+        nodes.select_nth_unstable_by(mid, |a, b| a.y.total_cmp(&b.y));
+    } else {
+        nodes.select_nth_unstable_by(mid, |a, b| a.x.total_cmp(&b.x));
+    }
+    nodes[mid].y_split = y_split;
+    nodes[mid].bbox = bbox;
     let (left, right) = nodes.split_at_mut(mid);
-    arrange(left, depth + 1);
-    arrange(&mut right[1..], depth + 1);
+    arrange(left);
+    arrange(&mut right[1..]);
 }
 
-fn search(nodes: &[(f64, f64, usize)], depth: usize, x: f64, y: f64, best: &mut (f64, usize)) {
+fn search(nodes: &[Node], x: f64, y: f64, best: &mut (f64, usize)) {
     if nodes.is_empty() {
         return;
     }
     let mid = nodes.len() / 2;
-    let (px, py, i) = nodes[mid];
-    let (dx, dy) = (x - px, y - py);
+    let node = &nodes[mid];
+    if node.box_distance2(x, y) > best.0 {
+        return;
+    }
+    let (dx, dy) = (x - node.x, y - node.y);
     let d2 = dx * dx + dy * dy;
-    if d2 < best.0 || (d2 == best.0 && i < best.1) {
-        *best = (d2, i);
+    if d2 < best.0 || (d2 == best.0 && node.index < best.1) {
+        *best = (d2, node.index);
     }
-    let diff = if depth.is_multiple_of(2) { dx } else { dy };
+    let diff = if node.y_split { dy } else { dx };
     let (near, far) = if diff < 0.0 { (&nodes[..mid], &nodes[mid + 1..]) } else { (&nodes[mid + 1..], &nodes[..mid]) };
-    search(near, depth + 1, x, y, best);
-    // The computed distance of any point beyond the split is at least diff * diff
-    // (rounding is monotonic), so this prunes nothing that could win or tie.
-    if diff * diff <= best.0 {
-        search(far, depth + 1, x, y, best);
-    }
+    search(near, x, y, best);
+    search(far, x, y, best);
 }
 
 /// Finds (u, v) of the point (x, y), starting from the history and recording the
@@ -217,7 +264,7 @@ fn search(nodes: &[(f64, f64, usize)], depth: usize, x: f64, y: f64, best: &mut 
 pub(crate) fn xy_to_uv(
     line: &RefLine,
     index: &SampleIndex,
-    options: &Settings,
+    options: &EvalOptions,
     history: &mut History,
     x: f64,
     y: f64,
@@ -309,10 +356,8 @@ pub(crate) fn xy_to_uv(
         *u = line.u_last + dx * t.last_cos + dy * t.last_sin;
         *v = dy * t.last_cos - dx * t.last_sin;
     };
-    // The reference library tests option id 1 (the u border mode) for the value 1
-    // here; we keep that test so that answers stay the same.
     match closed {
-        Some((cmin, cmax)) if options.has_int(opt::BORDER_MODE_U, 1) => {
+        Some((cmin, cmax)) if options.closed_search => {
             if u > cmax {
                 from_start(&mut u, &mut v);
             } else if u < cmin {

@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Runs the benchmark against this project's library and, when given, against
+# another library with the same API (for example the reference C library, built
+# by you outside this project with gcc -O2), and prints the figures and ratios.
+#
+# usage: bench/compare.sh [OTHER_LIB OTHER_INCLUDE_DIR]
+#   OTHER_LIB           a static library (.a) offering the classic OpenCRG C API
+#   OTHER_INCLUDE_DIR   the folder holding its crgBaseLib.h
+# Environment: ROADS (default target/bench-roads), N (queries, default 2000000),
+# THREADS (default: number of cores), REPEAT (load runs per file, default 3).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+roads=${ROADS:-target/bench-roads}
+n=${N:-2000000}
+threads=${THREADS:-$(nproc)}
+repeat=${REPEAT:-3}
+out=$(mktemp -d)
+
+cargo build --release -q -p opencrg-sys
+cargo run --release -q -p opencrg --example make_bench_roads -- "$roads" >/dev/null
+cc -O2 -Iinclude bench/crg_bench.c target/release/libopencrg.a -lm -lpthread -ldl -o "$out/bench_opencrg"
+libs=(opencrg)
+if [ $# -ge 2 ]; then
+    cc -O2 -I"$2" bench/crg_bench.c "$1" -lm -lpthread -o "$out/bench_other"
+    libs+=(other)
+fi
+
+# best (lowest for times, highest otherwise) of several values
+best() { sort -g | if [ "$1" = low ]; then head -n1; else tail -n1; fi; }
+
+printf '%-22s %-26s' road figure; for l in "${libs[@]}"; do printf ' %14s' "$l"; done
+[ ${#libs[@]} -eq 2 ] && printf ' %8s' ratio; echo
+for f in track_500m_krbi track_500m_lrfi winding_10km_krbi; do
+    file="$roads/$f.crg"
+    declare -A val=()
+    for l in "${libs[@]}"; do
+        for r in $(seq "$repeat"); do "$out/bench_$l" load "$file"; done >"$out/load_$l"
+        val[$l,load_s]=$(awk '$1=="load_s"{print $2}' "$out/load_$l" | best low)
+        val[$l,peak_rss_mb]=$(awk '$1=="peak_rss_mb"{print $2}' "$out/load_$l" | best low)
+        if [ "$f" != track_500m_lrfi ]; then
+            "$out/bench_$l" eval "$file" "$n" "$threads" >"$out/eval_$l"
+            while read -r name value unit; do val[$l,$name]=$value; done <"$out/eval_$l"
+        fi
+    done
+    names="load_s peak_rss_mb"
+    [ "$f" != track_500m_lrfi ] && names="$names $(awk '{print $1}' "$out/eval_opencrg" | tr '\n' ' ')"
+    for name in $names; do
+        printf '%-22s %-26s' "$f" "$name"
+        for l in "${libs[@]}"; do printf ' %14s' "${val[$l,$name]}"; done
+        if [ ${#libs[@]} -eq 2 ]; then
+            case $name in
+                load_s|peak_rss_mb) awk -v a="${val[other,$name]}" -v b="${val[opencrg,$name]}" 'BEGIN{printf " %8.2f", (b>0)?a/b:0}' ;;
+                *) awk -v a="${val[opencrg,$name]}" -v b="${val[other,$name]}" 'BEGIN{printf " %8.2f", (b>0)?a/b:0}' ;;
+            esac
+        fi
+        echo
+    done
+    unset val
+done
+echo "ratio: how many times better this project's library is (time, memory: other/ours; rates: ours/other)"
+rm -rf "$out"
