@@ -34,7 +34,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     let demo = std::fs::read("examples/data/demo_road.crg")?;
     std::fs::write(dir.join("header/demo_road"), demo)?;
-    for (i, seed) in [vec![3u8, 10, 5, 2, 21, 0, 0, 0, 0, 0, 0, 0, 64], vec![1u8, 30, 200, 0, 1, 1]].iter().enumerate() {
+    for (i, seed) in [vec![3u8, 10, 5, 2, 21, 0, 0, 0, 0, 0, 0, 0, 64], vec![1u8, 30, 200, 0, 1, 1]].iter().enumerate()
+    {
         std::fs::write(dir.join(format!("evaluation/seed{i}")), seed)?;
     }
     Ok(())

@@ -52,18 +52,18 @@ fn bad_inputs_are_refused_with_a_clear_error() {
         + 81;
     let mut truncated_binary = full.clone();
     truncated_binary.truncate(data_start + 100);
-    let huge_rows = String::from_utf8(full[..data_start].to_vec())
-        .unwrap()
-        .replace("REFERENCE_LINE_END_U = 10.0", "REFERENCE_LINE_END_U = 1e12")
-        .into_bytes()
-        .into_iter()
-        .chain(full[data_start..].iter().copied())
-        .collect::<Vec<u8>>();
+    let with_end_u = |end: &str| -> Vec<u8> {
+        let head = String::from_utf8(full[..data_start].to_vec())
+            .unwrap()
+            .replace("REFERENCE_LINE_END_U = 10.0", &format!("REFERENCE_LINE_END_U = {end}"));
+        head.into_bytes().into_iter().chain(full[data_start..].iter().copied()).collect()
+    };
     let mut garbage: Vec<u8> = (0..4096u32).map(|i| (i.wrapping_mul(2654435761) >> 13) as u8).collect();
     garbage[0] = b'%';
     let cases: Vec<(&str, Vec<u8>, &str)> = vec![
         ("truncated binary data", truncated_binary, "the header declares"),
-        ("a header declaring 10^12 rows", huge_rows, "the header declares"),
+        ("a header declaring 10^12 rows", with_end_u("1e12"), "the header declares"),
+        ("a size that overflows", with_end_u("1e308"), "the header declares"),
         ("truncated text record", lrfi(OK_ROAD, &[ROWS[0], ROWS[1], " 0.0200000 0.20"]), "data record 3, channel 2"),
         ("wrong channel count", lrfi(OK_ROAD, &[" 0.0000000 0.0000000", " 0.0100000 0.1000000"]), "record ends after"),
         (
@@ -135,6 +135,18 @@ fn missing_files_directories_and_reference_loops() {
     let e = Road::load(&a).unwrap_err().to_string();
     assert!(e.contains("loop"), "{e}");
 
+    // a chain of references deeper than the limit
+    let depth = opencrg::reader::MAX_REFERENCE_DEPTH + 3;
+    for i in 0..depth {
+        std::fs::write(
+            tmp(&format!("chain{i}.crg")),
+            format!("$ROAD_CRG_FILE\n{}\n$\n", tmp(&format!("chain{}.crg", i + 1)).display()),
+        )
+        .unwrap();
+    }
+    let e = Road::load(tmp("chain0.crg")).unwrap_err().to_string();
+    assert!(e.contains("nest deeper"), "{e}");
+
     let missing = tmp("refers_to_missing.crg");
     std::fs::write(&missing, "$ROAD_CRG_FILE\n  $OPENCRG_SURELY_UNSET_VAR/x.crg\n$\n").unwrap();
     let e = Road::load(&missing).unwrap_err().to_string();
@@ -160,6 +172,19 @@ fn what_the_reference_reads_loads() {
     let road = Road::from_bytes(text, "case.crg").unwrap();
     assert_eq!(road.u_range(), (2.0, 2.5));
     assert_eq!(road.grid().at(0, 0), -1.0);
+}
+
+#[test]
+fn v_sections_out_of_order_are_sorted_as_the_reference_does() {
+    let text = lrfi(OK_ROAD, &ROWS).replace_str(
+        "D:long section at v = -1.0,m\nD:long section at v = 1.0,m",
+        "D:long section at v = 1.0,m\nD:long section at v = -1.0,m",
+    );
+    let road = Road::from_bytes(text, "swapped.crg").unwrap();
+    assert_eq!(road.v_range(), (-1.0, 1.0));
+    // the column written first (v = 1) holds 0.1 in the second row
+    assert_eq!(road.grid().at(1, 1), 0.1);
+    assert_eq!(road.grid().at(1, 0), 0.2);
 }
 
 #[test]
