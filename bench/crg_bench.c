@@ -117,7 +117,7 @@ int main(int argc, char **argv)
     /* x/y to u/v on random points with no history: every query searches afresh */
     int cp0 = crgContactPointCreate(g_id);
     crgContactPointSetHistory(cp0, 0);
-    long nr = g_n / 10;
+    long nr = g_n / 100;
     printf("xy2uv_random_nohistory %.0f q/s\n", run(q_xy2uv, cp0, nr));
     /* a vehicle path: u increasing, v weaving, x/y looked up with history */
     for (long i = 0; i < g_n; i++) {

@@ -26,7 +26,28 @@ fn time(name: &str, road: &str, n: usize, mut f: impl FnMut(usize)) {
     println!("{road:<22} {name:<24} {ns:8.1} ns/call {:10.1} Mq/s", 1e3 / ns);
 }
 
+/// Random x/y to u/v without history on the same winding shape at growing lengths:
+/// the cost should grow with the log of the length (a linear scan would grow 100x).
+fn search_scaling() {
+    for km in [1.0, 10.0, 100.0] {
+        let length = km * 1000.0;
+        let road = RoadSpec::straight(length, 2.0, 0.1, 0.5).with_heading(|u| (u / 300.0).sin()).build().expect("road");
+        let road = Arc::new(road);
+        let mut rng = Rng(1234567);
+        let probe = ContactPoint::new(road.clone());
+        let n = 200_000;
+        let xy: Vec<(f64, f64)> =
+            (0..n).map(|_| probe.uv_to_xy(length * rng.next(), 2.0 * rng.next() - 1.0).expect("inside")).collect();
+        let mut cp = ContactPoint::new(road);
+        cp.set_history(0);
+        time("xy_to_uv (no history)", &format!("winding {km} km"), n, |i| {
+            black_box(cp.xy_to_uv(xy[i].0, xy[i].1).unwrap());
+        });
+    }
+}
+
 fn main() {
+    search_scaling();
     let roads = [
         ("demo 120 m", RoadSpec::straight(120.0, 6.0, 0.5, 0.25).with_heading(|u| 0.2 + 0.4 * (u / 120.0).powi(2))),
         ("track 100 m at 1 cm", RoadSpec::straight(100.0, 4.0, 0.01, 0.01).with_elevation(|u, v| (u * 3.0).sin() * v)),

@@ -237,17 +237,17 @@ pub enum DataFormat {
 }
 
 impl DataFormat {
-    /// Reads the format letters after `#:` the way the reference does: `L` means
-    /// long records, `D` double precision, `F` formatted text.
-    pub fn from_letters(letters: &str) -> Self {
-        let l: String = letters.chars().take(4).collect::<String>().to_ascii_uppercase();
-        let double = l.contains('D');
-        match (l.contains('F'), double) {
-            (true, false) => DataFormat::Lrfi,
-            (true, true) => DataFormat::Ldfi,
-            (false, false) => DataFormat::Krbi,
-            (false, true) => DataFormat::Kdbi,
-        }
+    /// The format named after `#:` (any case, comments after it ignored); `None` for
+    /// anything but the four formats of the specification.
+    pub fn from_letters(letters: &str) -> Option<Self> {
+        let name = strip_inline_comment(letters).trim().to_ascii_uppercase();
+        Some(match name.as_str() {
+            "LRFI" => DataFormat::Lrfi,
+            "LDFI" => DataFormat::Ldfi,
+            "KRBI" => DataFormat::Krbi,
+            "KDBI" => DataFormat::Kdbi,
+            _ => return None,
+        })
     }
 
     /// The format's name as written after `#:`.
@@ -384,7 +384,8 @@ mod tests {
         assert_eq!(tag("x"), None);
         let lines: Vec<_> = Lines::new(b"a\r\nb\n\nc").map(|l| latin1(l.bytes)).collect();
         assert_eq!(lines, ["a", "b", "", "c"]);
-        assert_eq!(DataFormat::from_letters("LRFI"), DataFormat::Lrfi);
-        assert_eq!(DataFormat::from_letters("KDBI"), DataFormat::Kdbi);
+        assert_eq!(DataFormat::from_letters("LRFI  ! text"), Some(DataFormat::Lrfi));
+        assert_eq!(DataFormat::from_letters("kdbi"), Some(DataFormat::Kdbi));
+        assert_eq!(DataFormat::from_letters("XRBI"), None);
     }
 }

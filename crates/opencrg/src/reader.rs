@@ -559,7 +559,14 @@ impl Loader {
     fn data_def_line(&mut self, path: &Path, number: usize, text: &str) -> Result<()> {
         let t = text.trim_start_matches(' ');
         if header::starts_with_ignore_case(t, "#:") {
-            self.header.format = DataFormat::from_letters(&t[2..]);
+            self.header.format = DataFormat::from_letters(&t[2..]).ok_or_else(|| {
+                Error::format(
+                    path,
+                    Location::Line(number),
+                    "$KD_Definition",
+                    format!("unknown data format '{}' (LRFI, LDFI, KRBI or KDBI)", t[2..].trim()),
+                )
+            })?;
         } else if header::starts_with_ignore_case(t, "D:") {
             let channel = header::parse_channel(t)
                 .map_err(|e| Error::format(path, Location::Line(number), "$KD_Definition", e))?;

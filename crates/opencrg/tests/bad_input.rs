@@ -103,6 +103,11 @@ fn bad_inputs_are_refused_with_a_clear_error() {
         ("unknown unit", lrfi(OK_ROAD, &ROWS).replace_str("v = 1.0,m", "v = 1.0,ft"), "$KD_Definition"),
         ("only one cross section", lrfi(OK_ROAD, &ROWS[..1]), "at least 2 are needed"),
         ("binary garbage", garbage, "no data section"),
+        (
+            "an unknown data format",
+            lrfi(OK_ROAD, &ROWS).replace_str("#:LRFI", "#:LRXI"),
+            "bad.crg:9: $KD_Definition: unknown data format 'LRXI'",
+        ),
         ("an empty file", Vec::new(), "is empty"),
     ];
     for (what, bytes, expected) in cases {
