@@ -168,14 +168,16 @@ fn clamp_index(frac: &mut f64, n: usize) -> usize {
     if *frac < 0.0 {
         *frac = 0.0;
     }
-    if *frac >= (n - 1) as f64 {
+    // Indices stay far below 2^63, so i64 conversions are exact. The test is written
+    // so that NaN takes the clamping branch.
+    if !(*frac < (n - 1) as i64 as f64) {
         *frac = 1.0;
         n - 2
     } else {
-        // In [0, n - 1): the signed conversion is exact and much cheaper than `as usize`.
-        let i = *frac as i64 as usize;
+        // SAFETY: 0 <= frac < n - 1 here: finite and within i64.
+        let i = unsafe { frac.to_int_unchecked::<i64>() };
         *frac -= i as f64;
-        i
+        i as usize
     }
 }
 
@@ -252,6 +254,15 @@ pub fn uv_to_z(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<f64
         };
         return Some(surface(road, iu, fu, iv, fv, v, true, true));
     }
+    uv_to_z_borders(road, options, u, v)
+}
+
+/// Elevation where a border mode or a smoothing zone applies (kept out of line so
+/// the common case above stays small).
+#[inline(never)]
+fn uv_to_z_borders(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<f64> {
+    let l = &road.line;
+    let g = &road.grid;
     let u = wrap_closed_u(l, options, u);
     let (ua, u, mut with_values, mut smooth_end, mut z_offset) = resolve_u(l, options, u)?;
     let with_bank = with_values;

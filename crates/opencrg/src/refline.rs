@@ -311,13 +311,13 @@ impl RefLine {
         let last = self.n - 2;
         let i = if f < 0.0 {
             0
-        } else if f >= last as f64 {
+        } else if !(f < last as i64 as f64) {
             last
         } else {
-            // In [0, n - 2): the signed conversion is exact and cheaper than `as usize`.
-            f as i64 as usize
+            // SAFETY: 0 <= f < n - 2 here (NaN took the branch above): finite, within i64.
+            unsafe { f.to_int_unchecked::<i64>() as usize }
         };
-        (i, f - i as f64)
+        (i, f - i as i64 as f64)
     }
 
     /// Number of cross sections spanning 0.5 m (at least 1): the step of the curvature estimate.

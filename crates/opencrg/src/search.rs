@@ -278,7 +278,7 @@ pub(crate) fn xy_to_uv(
 ) -> (f64, f64) {
     let n = line.n;
     let (xs, ys) = (&line.x, &line.y);
-    let closed = line.closed;
+    let closed = &line.closed;
     let start = match history.lookup(x, y) {
         Some(i) => i.min(n - 1),
         None => index.nearest(line, x, y),
@@ -350,7 +350,7 @@ pub(crate) fn xy_to_uv(
     let ta = behind / (x2x0 * x2x1 + y2y0 * y2y1);
     let tb = (x3x1 * (x2 - x) + y3y1 * (y2 - y)) / (x3x1 * x2x1 + y3y1 * y2y1);
     let du = ta / (ta + tb) * line.u_inc;
-    let mut u = (k - 1) as f64 * line.u_inc + du + line.u_first;
+    let mut u = (k - 1) as i64 as f64 * line.u_inc + du + line.u_first;
 
     let t = &line.trig;
     let from_start = |u: &mut f64, v: &mut f64| {
@@ -365,6 +365,7 @@ pub(crate) fn xy_to_uv(
     };
     match closed {
         Some((cmin, cmax)) if options.closed_search => {
+            let (cmin, cmax) = (*cmin, *cmax);
             if u > cmax {
                 from_start(&mut u, &mut v);
             } else if u < cmin {
