@@ -127,19 +127,14 @@ fn resolve_u(l: &RefLine, options: &EvalOptions, mut u: f64) -> Option<(Axis, f6
                 with_values = false;
                 smooth_end = if frac < 0.0 { 1 } else { 2 };
             }
-            REPEAT => {
-                frac = ((u - l.u_first) / l.u_inc) % max_frac;
-                if frac < 0.0 {
-                    frac += max_frac;
-                }
+            REPEAT | REFLECT => {
+                frac = if mode == REPEAT {
+                    repeat(frac, max_frac)
+                } else {
+                    reflect(frac, (u - l.u_first) / size, max_frac)
+                };
                 in_core = true;
                 u = l.u_first + frac * l.u_inc;
-            }
-            REFLECT => {
-                let (f, moved) = reflect(frac, (u - l.u_first) / size, max_frac);
-                frac = f;
-                in_core = true;
-                u = l.u_first + moved * l.u_inc;
             }
             _ => {}
         }
@@ -149,16 +144,28 @@ fn resolve_u(l: &RefLine, options: &EvalOptions, mut u: f64) -> Option<(Axis, f6
     Some((Axis { index, frac, in_core, mode }, u, with_values, smooth_end, offset))
 }
 
-/// Reflects a grid fraction into the data; returns the fraction (twice, for the
-/// index and for the moved coordinate).
+/// Maps a grid fraction into one period of the data (border mode repeat).
 #[inline]
-fn reflect(frac: f64, periods: f64, max_frac: f64) -> (f64, f64) {
-    let rep = (periods as i32).unsigned_abs();
-    let mut f = frac.abs() - f64::from(rep) * max_frac;
-    if rep % 2 == 1 {
-        f = max_frac - f;
+fn repeat(frac: f64, max_frac: f64) -> f64 {
+    let f = frac % max_frac;
+    if f < 0.0 {
+        f + max_frac
+    } else {
+        f
     }
-    (f, f)
+}
+
+/// Reflects a grid fraction into the data (border mode reflect); `periods` is how
+/// many data lengths the coordinate lies from the start.
+#[inline]
+fn reflect(frac: f64, periods: f64, max_frac: f64) -> f64 {
+    let rep = (periods as i32).unsigned_abs();
+    let f = frac.abs() - f64::from(rep) * max_frac;
+    if rep % 2 == 1 {
+        max_frac - f
+    } else {
+        f
+    }
 }
 
 /// Splits a non-negative grid fraction into an interval index (at most `n - 2`) and
@@ -287,19 +294,14 @@ fn uv_to_z_borders(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option
                         index_from_frac = false;
                     }
                     EX_ZERO => with_values = false,
-                    REPEAT => {
-                        frac = ((v - g.v_first) / g.v_inc) % max_frac;
-                        if frac < 0.0 {
-                            frac += max_frac;
-                        }
+                    REPEAT | REFLECT => {
+                        frac = if v_mode == REPEAT {
+                            repeat(frac, max_frac)
+                        } else {
+                            reflect(frac, (v - g.v_first) / size, max_frac)
+                        };
                         v_in_core = true;
                         v = g.v_first + frac * g.v_inc;
-                    }
-                    REFLECT => {
-                        let (f, moved) = reflect(frac, (v - g.v_first) / size, max_frac);
-                        frac = f;
-                        v_in_core = true;
-                        v = g.v_first + moved * g.v_inc;
                     }
                     _ => {}
                 }

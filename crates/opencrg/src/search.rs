@@ -139,21 +139,20 @@ impl Node {
     #[inline]
     fn box_distance2(&self, x: f64, y: f64) -> f64 {
         let [x0, x1, y0, y1] = self.bbox;
-        let dx = if x < x0 {
-            x0 - x
-        } else if x > x1 {
-            x - x1
-        } else {
-            0.0
-        };
-        let dy = if y < y0 {
-            y0 - y
-        } else if y > y1 {
-            y - y1
-        } else {
-            0.0
-        };
+        let (dx, dy) = (gap(x, x0, x1), gap(y, y0, y1));
         dx * dx + dy * dy
+    }
+}
+
+/// Distance from `p` to the interval `lo..=hi` (0 inside).
+#[inline]
+fn gap(p: f64, lo: f64, hi: f64) -> f64 {
+    if p < lo {
+        lo - p
+    } else if p > hi {
+        p - hi
+    } else {
+        0.0
     }
 }
 
