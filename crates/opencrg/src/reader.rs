@@ -380,10 +380,15 @@ impl Loader {
         let mut reference_line = 0;
         for line in header::Lines::new(bytes) {
             let text = header::latin1(line.bytes);
-            // In comment and file sections only a '$' in column 1 ends the section
-            // (a file name may start with a blank and a $VARIABLE).
+            // In comment and file sections only a '$' in column 1 ends the section; in
+            // a file section a '$NAME' that is no section keyword starts a file name
+            // with an environment variable.
             let column_one = matches!(section, Section::Comment | Section::File);
-            let tag = if column_one && !text.starts_with('$') { None } else { header::tag(&text) };
+            let tag = match header::tag(&text) {
+                _ if column_one && !text.starts_with('$') => None,
+                Some(Tag::End) if section == Section::File && starts_with_variable(&text) => None,
+                t => t,
+            };
             if let Some(tag) = tag {
                 if section == Section::File {
                     self.follow_reference(path, &std::mem::take(&mut reference), reference_line, level)?;
@@ -576,6 +581,11 @@ impl Loader {
         }
         Ok(())
     }
+}
+
+/// Whether a line starts with `$` and a variable name (letters, digits, `_`).
+fn starts_with_variable(line: &str) -> bool {
+    line.strip_prefix('$').and_then(|r| r.chars().next()).is_some_and(|c| c.is_ascii_alphanumeric() || c == '_')
 }
 
 /// The part of a `$ROAD_CRG_FILE` line that belongs to the file name: the first
