@@ -114,11 +114,6 @@ impl ContactPoint {
         }
     }
 
-    /// Number of history entries.
-    pub fn history_size(&self) -> usize {
-        self.history.capacity()
-    }
-
     /// x/y of (u, v).
     pub fn uv_to_xy(&self, u: f64, v: f64) -> Result<(f64, f64)> {
         finite(u, v)?;

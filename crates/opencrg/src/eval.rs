@@ -6,15 +6,15 @@
 use crate::grid::VLayout;
 use crate::refline::RefLine;
 use crate::road::Road;
-use crate::settings::{opt, Settings};
+use crate::settings::{opt, BorderMode, Settings};
 
-/// Border mode values as stored in the options (raw integers, since an application may
-/// set any integer).
-const NONE: i32 = 0;
-const EX_ZERO: i32 = 1;
-const EX_KEEP: i32 = 2;
-const REPEAT: i32 = 3;
-const REFLECT: i32 = 4;
+// Border modes as the options store them: raw integers, since an application may set
+// any integer (values outside these act as none of them).
+const NONE: i32 = BorderMode::None as i32;
+const EX_ZERO: i32 = BorderMode::ExZero as i32;
+const EX_KEEP: i32 = BorderMode::ExKeep as i32;
+const REPEAT: i32 = BorderMode::Repeat as i32;
+const REFLECT: i32 = BorderMode::Reflect as i32;
 
 /// Tolerance within which a v just outside an uneven grid counts as on its border.
 const V_BORDER_SNAP: f64 = 1e-8;

@@ -123,17 +123,6 @@ impl RoadParams {
             RoadKey::VIncrement => &mut self.v_increment,
         }
     }
-
-    /// Every parameter that is set, with its keyword, in a fixed order.
-    pub fn entries(&self) -> Vec<(String, f64)> {
-        let mut copy = self.clone();
-        let mut out: Vec<(String, f64)> = ROAD_KEYS
-            .iter()
-            .filter_map(|(name, key)| copy.slot(*key).map(|v| (name.to_ascii_uppercase(), v)))
-            .collect();
-        out.extend(self.extra.iter().cloned());
-        out
-    }
 }
 
 /// What the option keywords of `$ROAD_CRG_OPTS` map to.

@@ -115,20 +115,6 @@ pub enum BorderMode {
     Reflect = 4,
 }
 
-impl BorderMode {
-    /// The mode for an integer option value; `None` for values outside 0..=4.
-    pub fn from_i32(v: i32) -> Option<Self> {
-        Some(match v {
-            0 => Self::None,
-            1 => Self::ExZero,
-            2 => Self::ExKeep,
-            3 => Self::Repeat,
-            4 => Self::Reflect,
-            _ => return None,
-        })
-    }
-}
-
 /// NaN handling modes of the grid (values of `GRID_NAN_MODE`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum NanMode {
@@ -316,11 +302,6 @@ impl Settings {
         for id in [m::REFPOINT_X, m::REFPOINT_Y, m::REFPOINT_Z, m::REFPOINT_PHI] {
             self.slots[id as usize] = Some(Value::Double(0.0));
         }
-    }
-
-    /// Which family this table holds.
-    pub fn family(&self) -> Family {
-        self.family
     }
 
     fn kind_of(&self, id: u32) -> Result<(Kind, &'static str), SettingError> {
