@@ -56,11 +56,17 @@ impl ContactPoint {
         &self.options
     }
 
+    /// Changes the options through `f` and refreshes what evaluation reads from them:
+    /// the one way options change, so the two never disagree.
+    fn edit_options<R>(&mut self, f: impl FnOnce(&mut Settings) -> R) -> R {
+        let r = f(&mut self.options);
+        self.eval = EvalOptions::from(&self.options);
+        r
+    }
+
     /// Sets an integer option.
     pub fn set_option_int(&mut self, id: u32, value: i32) -> Result<()> {
-        self.options.set_int(id, value)?;
-        self.eval = EvalOptions::from(&self.options);
-        Ok(())
+        Ok(self.edit_options(|o| o.set_int(id, value))?)
     }
 
     /// Sets a double option. The search options act at once: `REFLINE_SEARCH_U` and
@@ -77,28 +83,22 @@ impl ContactPoint {
             opt::REFLINE_FAR => self.history.set_far(value),
             _ => {}
         }
-        self.options.set_double(id, value)?;
-        self.eval = EvalOptions::from(&self.options);
-        Ok(())
+        Ok(self.edit_options(|o| o.set_double(id, value))?)
     }
 
     /// Removes one option (the evaluation then behaves as with the option absent).
     pub fn remove_option(&mut self, id: u32) -> bool {
-        let removed = self.options.remove(id);
-        self.eval = EvalOptions::from(&self.options);
-        removed
+        self.edit_options(|o| o.remove(id))
     }
 
     /// Removes every option.
     pub fn clear_options(&mut self) {
-        self.options.clear();
-        self.eval = EvalOptions::from(&self.options);
+        self.edit_options(Settings::clear);
     }
 
     /// Restores the library's default options and search distances.
     pub fn reset_options(&mut self) {
-        self.options.reset_options();
-        self.eval = EvalOptions::from(&self.options);
+        self.edit_options(Settings::reset_options);
         let _ = self.set_option_double(opt::REFLINE_CLOSE, DEFAULT_CLOSE);
         let _ = self.set_option_double(opt::REFLINE_FAR, DEFAULT_FAR);
     }

@@ -17,7 +17,7 @@ const REPEAT: i32 = BorderMode::Repeat as i32;
 const REFLECT: i32 = BorderMode::Reflect as i32;
 
 /// Tolerance within which a v just outside an uneven grid counts as on its border.
-const V_BORDER_SNAP: f64 = 1e-8;
+pub(crate) const V_BORDER_SNAP: f64 = 1e-8;
 
 /// The options evaluation reads, taken out of a settings table once so that the
 /// hot path reads plain fields.
@@ -87,19 +87,28 @@ pub fn uv_to_xy(road: &Road, options: &EvalOptions, u: f64, v: f64) -> (f64, f64
     (a.0 + frac * (b.0 - a.0), a.1 + frac * (b.1 - a.1))
 }
 
-/// Where a coordinate lies after the border mode is applied.
-struct Axis {
+/// Where u lies after its border mode is applied.
+struct UPlace {
+    /// Interval index and fraction in the grid.
     index: usize,
     frac: f64,
+    /// u, moved into the data by the repeat and reflect modes.
+    u: f64,
+    /// Whether u is inside the data (after moving).
     in_core: bool,
+    /// The border mode that applied (`NONE` inside the data).
     mode: i32,
+    /// Whether grid values and banking count (not with border mode zero).
+    with_values: bool,
+    /// Which end the smoothing base comes from: 0 none, 1 begin, 2 end.
+    smooth_end: u8,
+    /// The u border offset, when u was outside the data.
+    offset: f64,
 }
 
 /// Resolves u against the border mode; `None` when the mode refuses.
-/// Returns the axis, the possibly moved u, whether grid values and banking count,
-/// which end the smoothing base comes from, and the border offset.
 #[inline]
-fn resolve_u(l: &RefLine, options: &EvalOptions, mut u: f64) -> Option<(Axis, f64, bool, u8, f64)> {
+fn resolve_u(l: &RefLine, options: &EvalOptions, mut u: f64) -> Option<UPlace> {
     let mut frac = (u - l.u_first) / l.u_inc;
     let mut mode = NONE;
     let mut in_core = true;
@@ -141,7 +150,7 @@ fn resolve_u(l: &RefLine, options: &EvalOptions, mut u: f64) -> Option<(Axis, f6
         offset = options.offset_u;
     }
     let index = if index_from_frac { clamp_index(&mut frac, l.n) } else { 0 };
-    Some((Axis { index, frac, in_core, mode }, u, with_values, smooth_end, offset))
+    Some(UPlace { index, frac, u, in_core, mode, with_values, smooth_end, offset })
 }
 
 /// Maps a grid fraction into one period of the data (border mode repeat).
@@ -271,7 +280,8 @@ fn uv_to_z_borders(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option
     let l = &road.line;
     let g = &road.grid;
     let u = wrap_closed_u(l, options, u);
-    let (ua, u, mut with_values, mut smooth_end, mut z_offset) = resolve_u(l, options, u)?;
+    let ua = resolve_u(l, options, u)?;
+    let (u, mut with_values, mut smooth_end, mut z_offset) = (ua.u, ua.with_values, ua.smooth_end, ua.offset);
     let with_bank = with_values;
     let mut v = v;
 

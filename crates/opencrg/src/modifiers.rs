@@ -88,7 +88,7 @@ impl Road {
         }
         let outside_v = match g.layout {
             VLayout::Indexed => v < g.v_first || v > g.v_last,
-            VLayout::Explicit => v < g.v_first - 1e-8 || v > g.v_last + 1e-8,
+            VLayout::Explicit => v < g.v_first - eval::V_BORDER_SNAP || v > g.v_last + eval::V_BORDER_SNAP,
         };
         if outside_v {
             return 0.0;
@@ -114,12 +114,10 @@ impl Road {
         let mut u = l.u_first;
         let mut v = 0.0;
         set(m::REFPOINT_U, &mut u);
+        set(m::REFPOINT_V, &mut v);
+        // A fraction (plus its offset) overrides the absolute position.
         if let Some(f) = mods.get_double(m::REFPOINT_U_FRAC) {
             u = l.u_first + f * (l.u_last - l.u_first) + mods.get_double(m::REFPOINT_U_OFFSET).unwrap_or(0.0);
-            by_refpoint = true;
-        }
-        if let Some(d) = mods.get_double(m::REFPOINT_V) {
-            v = d;
             by_refpoint = true;
         }
         if let Some(f) = mods.get_double(m::REFPOINT_V_FRAC) {

@@ -164,31 +164,31 @@ const OPTION_KEYS: [(&str, OptKey); 26] = [
     ("log_stat_freq", OptKey::Ignored),
 ];
 
-const MODIFIER_KEYS: [(&str, u32); 24] = [
-    ("scale_z_grid", m::SCALE_Z),
-    ("scale_slope", m::SCALE_SLOPE),
-    ("scale_banking", m::SCALE_BANK),
-    ("scale_length", m::SCALE_LENGTH),
-    ("scale_width", m::SCALE_WIDTH),
-    ("scale_curvature", m::SCALE_CURVATURE),
-    ("grid_nan_mode", m::GRID_NAN_MODE),
-    ("grid_nan_offset", m::GRID_NAN_OFFSET),
-    ("refline_rotcenter_x", m::REFLINE_ROTCENTER_X),
-    ("refline_rotcenter_y", m::REFLINE_ROTCENTER_Y),
-    ("refline_offset_phi", m::REFLINE_OFFSET_PHI),
-    ("refline_offset_x", m::REFLINE_OFFSET_X),
-    ("refline_offset_y", m::REFLINE_OFFSET_Y),
-    ("refline_offset_z", m::REFLINE_OFFSET_Z),
-    ("refpoint_u_fraction", m::REFPOINT_U_FRAC),
-    ("refpoint_u_offset", m::REFPOINT_U_OFFSET),
-    ("refpoint_u", m::REFPOINT_U),
-    ("refpoint_v_fraction", m::REFPOINT_V_FRAC),
-    ("refpoint_v_offset", m::REFPOINT_V_OFFSET),
-    ("refpoint_v", m::REFPOINT_V),
-    ("refpoint_x", m::REFPOINT_X),
-    ("refpoint_y", m::REFPOINT_Y),
-    ("refpoint_z", m::REFPOINT_Z),
-    ("refpoint_phi", m::REFPOINT_PHI),
+const MODIFIER_KEYS: [(&str, OptKey); 24] = [
+    ("scale_z_grid", OptKey::Double(m::SCALE_Z)),
+    ("scale_slope", OptKey::Double(m::SCALE_SLOPE)),
+    ("scale_banking", OptKey::Double(m::SCALE_BANK)),
+    ("scale_length", OptKey::Double(m::SCALE_LENGTH)),
+    ("scale_width", OptKey::Double(m::SCALE_WIDTH)),
+    ("scale_curvature", OptKey::Double(m::SCALE_CURVATURE)),
+    ("grid_nan_mode", OptKey::Mode(m::GRID_NAN_MODE, 2)),
+    ("grid_nan_offset", OptKey::Double(m::GRID_NAN_OFFSET)),
+    ("refline_rotcenter_x", OptKey::Double(m::REFLINE_ROTCENTER_X)),
+    ("refline_rotcenter_y", OptKey::Double(m::REFLINE_ROTCENTER_Y)),
+    ("refline_offset_phi", OptKey::Double(m::REFLINE_OFFSET_PHI)),
+    ("refline_offset_x", OptKey::Double(m::REFLINE_OFFSET_X)),
+    ("refline_offset_y", OptKey::Double(m::REFLINE_OFFSET_Y)),
+    ("refline_offset_z", OptKey::Double(m::REFLINE_OFFSET_Z)),
+    ("refpoint_u_fraction", OptKey::Double(m::REFPOINT_U_FRAC)),
+    ("refpoint_u_offset", OptKey::Double(m::REFPOINT_U_OFFSET)),
+    ("refpoint_u", OptKey::Double(m::REFPOINT_U)),
+    ("refpoint_v_fraction", OptKey::Double(m::REFPOINT_V_FRAC)),
+    ("refpoint_v_offset", OptKey::Double(m::REFPOINT_V_OFFSET)),
+    ("refpoint_v", OptKey::Double(m::REFPOINT_V)),
+    ("refpoint_x", OptKey::Double(m::REFPOINT_X)),
+    ("refpoint_y", OptKey::Double(m::REFPOINT_Y)),
+    ("refpoint_z", OptKey::Double(m::REFPOINT_Z)),
+    ("refpoint_phi", OptKey::Double(m::REFPOINT_PHI)),
 ];
 
 /// The bytes of a file: memory-mapped when possible.
@@ -401,8 +401,7 @@ impl Loader {
                     reference.push_str(&reference_piece(&text));
                 }
                 Section::Road => self.road_line(path, line.number, &text)?,
-                Section::Options => self.option_line(path, line.number, &text, level)?,
-                Section::Modifiers => self.modifier_line(path, line.number, &text, level)?,
+                Section::Options | Section::Modifiers => self.setting_line(section, path, line.number, &text, level)?,
                 Section::Mpro => {
                     if let Some((k, v)) = key_value(&text) {
                         self.header.mpro.push((k, header::strip_inline_comment(v).trim().to_string()));
@@ -455,12 +454,7 @@ impl Loader {
             return Ok(());
         };
         let field = key.to_ascii_uppercase();
-        let v = parse_f64_prefix(value).ok_or_else(|| {
-            Error::format(path, Location::Line(number), &field, format!("'{}' is not a number", value.trim()))
-        })?;
-        if !v.is_finite() {
-            return Err(Error::format(path, Location::Line(number), &field, "value must be finite"));
-        }
+        let v = finite_value(path, number, &field, value)?;
         if key.starts_with("reference_line_offset_") {
             return Ok(());
         }
@@ -471,82 +465,50 @@ impl Loader {
         Ok(())
     }
 
-    fn option_line(&mut self, path: &Path, number: usize, text: &str, level: usize) -> Result<()> {
-        if !(level == 0 || self.option_level == Some(level)) {
+    /// A line of `$ROAD_CRG_OPTS` or `$ROAD_CRG_MODS`. Only the top file, or the first
+    /// referenced file that has the section, sets them.
+    fn setting_line(&mut self, section: Section, path: &Path, number: usize, text: &str, level: usize) -> Result<()> {
+        let (keys, claimed, name): (&[(&str, OptKey)], _, _) = match section {
+            Section::Options => (&OPTION_KEYS, self.option_level, "$ROAD_CRG_OPTS"),
+            _ => (&MODIFIER_KEYS, self.modifier_level, "$ROAD_CRG_MODS"),
+        };
+        if !(level == 0 || claimed == Some(level)) {
             return Ok(());
         }
         let Some((key, value)) = key_value(text) else { return Ok(()) };
         let field = key.to_ascii_uppercase();
-        let bad = |what: &str| Error::format(path, Location::Line(number), &field, what.to_string());
-        let Some((_, k)) = lookup(&OPTION_KEYS, &key) else {
-            self.header
-                .warnings
-                .push(format!("{}:{number}: $ROAD_CRG_OPTS: unknown option {field} ignored", path.display()));
+        let at = format!("{}:{number}: {field}", path.display());
+        let Some((_, k)) = lookup(keys, &key) else {
+            self.header.warnings.push(format!("{at}: unknown keyword in {name}, ignored"));
             return Ok(());
         };
-        let opts = &mut self.header.options;
-        match k {
+        let target = match section {
+            Section::Options => &mut self.header.options,
+            _ => &mut self.header.modifiers,
+        };
+        let warning = match k {
             OptKey::Mode(id, max) => match parse_i32_prefix(value).filter(|v| (0..=max).contains(v)) {
-                Some(v) => opts.set_int(id, v)?,
-                None => self.header.warnings.push(format!(
-                    "{}:{number}: {field}: value '{}' is not one of 0..{max}; ignored",
-                    path.display(),
-                    value.trim()
-                )),
+                Some(v) => target.set_int(id, v).err().map(|e| format!("{at}: {e}")),
+                None => Some(format!("{at}: value '{}' is not one of 0..{max}; ignored", value.trim())),
             },
             OptKey::Flag(id) => {
                 // The reference sets these checks only for the value 1, and stores the option's id.
                 if parse_i32_prefix(value) == Some(1) {
-                    opts.set_int(id, id as i32)?;
+                    target.set_int(id, id as i32)?;
                 }
+                None
             }
             OptKey::Double(id) => {
-                let v = parse_f64_prefix(value).ok_or_else(|| bad("value is not a number"))?;
-                if !v.is_finite() {
-                    return Err(bad("value must be finite"));
-                }
-                if opts.set_double(id, v).is_err() {
-                    self.header.warnings.push(format!(
-                        "{}:{number}: {field}: value {v} refused (must be greater than zero)",
-                        path.display()
-                    ));
-                }
+                let v = finite_value(path, number, &field, value)?;
+                target.set_double(id, v).err().map(|e| format!("{at}: {e}"))
             }
-            OptKey::WarnMsgs => self.header.warn_msgs = parse_i32_prefix(value),
-            OptKey::Ignored => {}
-        }
-        Ok(())
-    }
-
-    fn modifier_line(&mut self, path: &Path, number: usize, text: &str, level: usize) -> Result<()> {
-        if !(level == 0 || self.modifier_level == Some(level)) {
-            return Ok(());
-        }
-        let Some((key, value)) = key_value(text) else { return Ok(()) };
-        let field = key.to_ascii_uppercase();
-        let bad = |what: String| Error::format(path, Location::Line(number), &field, what);
-        let Some((_, id)) = lookup(&MODIFIER_KEYS, &key) else {
-            self.header
-                .warnings
-                .push(format!("{}:{number}: $ROAD_CRG_MODS: unknown modifier {field} ignored", path.display()));
-            return Ok(());
+            OptKey::WarnMsgs => {
+                self.header.warn_msgs = parse_i32_prefix(value);
+                None
+            }
+            OptKey::Ignored => None,
         };
-        if id == m::GRID_NAN_MODE {
-            match parse_i32_prefix(value).filter(|v| (0..=2).contains(v)) {
-                Some(v) => self.header.modifiers.set_int(id, v)?,
-                None => self.header.warnings.push(format!(
-                    "{}:{number}: {field}: value '{}' is not one of 0..2; ignored",
-                    path.display(),
-                    value.trim()
-                )),
-            }
-        } else {
-            let v = parse_f64_prefix(value).ok_or_else(|| bad("value is not a number".into()))?;
-            if !v.is_finite() {
-                return Err(bad("value must be finite".into()));
-            }
-            self.header.modifiers.set_double(id, v)?;
-        }
+        self.header.warnings.extend(warning);
         Ok(())
     }
 
@@ -575,6 +537,16 @@ impl Loader {
 /// Whether a line starts with `$` and a variable name (letters, digits, `_`).
 fn starts_with_variable(line: &str) -> bool {
     line.strip_prefix('$').and_then(|r| r.chars().next()).is_some_and(|c| c.is_ascii_alphanumeric() || c == '_')
+}
+
+/// A header number that must be finite; the error names the line and field.
+fn finite_value(path: &Path, number: usize, field: &str, value: &str) -> Result<f64> {
+    let at = Location::Line(number);
+    match parse_f64_prefix(value) {
+        Some(v) if v.is_finite() => Ok(v),
+        Some(_) => Err(Error::format(path, at, field, "value must be finite")),
+        None => Err(Error::format(path, at, field, format!("'{}' is not a number", value.trim()))),
+    }
 }
 
 /// The part of a `$ROAD_CRG_FILE` line that belongs to the file name: the first
