@@ -4,6 +4,7 @@
  *
  * usage: crg_bench load FILE             load time and peak memory (one load per process)
  *        crg_bench eval FILE N THREADS   queries per second of every call
+ * CRG_BENCH_ONLY=uv2z_random,xy2z_path (say) measures only the figures named.
  * Prints one "name value unit" line per figure.
  */
 #include <pthread.h>
@@ -48,6 +49,12 @@ static __thread double g_sink;
 static volatile double g_keep;
 
 typedef int (*Query)(int cp, long i);
+static const char *g_only;
+/* Whether the figure `name` is measured (all of them when CRG_BENCH_ONLY is unset). */
+static int wanted(const char *name)
+{
+    return !g_only || strstr(g_only, name) != NULL;
+}
 
 static int q_uv2z(int cp, long i) { double z; int r = crgEvaluv2z(cp, g_u[i], g_v[i], &z); g_sink += z; return r; }
 static int q_uv2pk(int cp, long i) { double p, k; int r = crgEvaluv2pk(cp, g_u[i], g_v[i], &p, &k); g_sink += p + k; return r; }
@@ -86,6 +93,7 @@ int main(int argc, char **argv)
         return 2;
     }
     crgMsgSetLevel(dCrgMsgLevelNone);
+    g_only = getenv("CRG_BENCH_ONLY");
     long before = peak_kb();
     double t0 = now();
     g_id = crgLoaderReadFile(argv[2]);
@@ -111,21 +119,26 @@ int main(int argc, char **argv)
         g_v[i] = vMin + (vMax - vMin) * rnd();
         crgEvaluv2xy(cp, g_u[i], g_v[i], &g_x[i], &g_y[i]);
     }
-    printf("uv2z_random %.0f q/s\n", run(q_uv2z, cp, g_n));
-    printf("uv2pk_random %.0f q/s\n", run(q_uv2pk, cp, g_n));
-    printf("uv2xy_random %.0f q/s\n", run(q_uv2xy, cp, g_n));
+    if (wanted("uv2z_random"))
+        printf("uv2z_random %.0f q/s\n", run(q_uv2z, cp, g_n));
+    if (wanted("uv2pk_random"))
+        printf("uv2pk_random %.0f q/s\n", run(q_uv2pk, cp, g_n));
+    if (wanted("uv2xy_random"))
+        printf("uv2xy_random %.0f q/s\n", run(q_uv2xy, cp, g_n));
     /* x/y to u/v on random points with no history: every query searches afresh */
     int cp0 = crgContactPointCreate(g_id);
     crgContactPointSetHistory(cp0, 0);
     long nr = g_n / 100;
-    printf("xy2uv_random_nohistory %.0f q/s\n", run(q_xy2uv, cp0, nr));
+    if (wanted("xy2uv_random_nohistory"))
+        printf("xy2uv_random_nohistory %.0f q/s\n", run(q_xy2uv, cp0, nr));
     /* a vehicle path: u increasing, v weaving, x/y looked up with history */
     for (long i = 0; i < g_n; i++) {
         double u = uMin + (uMax - uMin) * i / g_n, v = 0.4 * (vMax - vMin) * sin(i * 1e-3);
         crgEvaluv2xy(cp, u, v, &g_x[i], &g_y[i]);
     }
-    printf("xy2z_path %.0f q/s\n", run(q_xy2z, cp, g_n));
-    if (threads > 1) {
+    if (wanted("xy2z_path"))
+        printf("xy2z_path %.0f q/s\n", run(q_xy2z, cp, g_n));
+    if (threads > 1 && wanted("threads")) {
         pthread_t t[64];
         struct Job jobs[64];
         double total = 0;

@@ -2,6 +2,7 @@
  * do this), and several threads loading roads at once: results must equal a
  * single-threaded run. usage: test_threads ROAD.crg */
 #include <pthread.h>
+#include <sched.h>
 #include <stdlib.h>
 #include <string.h>
 #include "crgBaseLib.h"
@@ -41,6 +42,23 @@ static void *evaluate(void *arg)
     return NULL;
 }
 
+/* Threads taking turns on one contact point: each call must see the contact point
+ * whole, whichever thread used it last. */
+static int g_shared_cp;
+static void *share(void *arg)
+{
+    int *ok = arg;
+    *ok = 1;
+    for (int i = 0; i < 20000 && *ok; i++) {
+        int k = i % QUERIES;
+        double u = 120.0 * k / QUERIES, v = 2.5 * sin(k * 0.01), z;
+        *ok = crgEvaluv2z(g_shared_cp, u, v, &z) == 1 && z == g_expected[k][2];
+        if (i % 50 == 0)
+            sched_yield();
+    }
+    return NULL;
+}
+
 static void *load_and_evaluate(void *arg)
 {
     int *ok = arg, id = crgLoaderReadFile(g_road), cp;
@@ -77,6 +95,14 @@ int main(int argc, char **argv)
         pthread_join(threads[i], NULL);
         CHECK(ok[i]);
     }
+    g_shared_cp = crgContactPointCreate(g_dataset);
+    for (i = 0; i < THREADS; i++)
+        CHECK(pthread_create(&threads[i], NULL, share, &ok[i]) == 0);
+    for (i = 0; i < THREADS; i++) {
+        pthread_join(threads[i], NULL);
+        CHECK(ok[i]);
+    }
+    CHECK(crgContactPointDelete(g_shared_cp) == 1);
     for (i = 0; i < THREADS; i++)
         CHECK(pthread_create(&threads[i], NULL, load_and_evaluate, &ok[i]) == 0);
     for (i = 0; i < THREADS; i++) {

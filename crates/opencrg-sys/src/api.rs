@@ -21,6 +21,8 @@ fn put<T>(p: *mut T, v: T) {
     unsafe { p.write(v) }
 }
 
+#[cold]
+#[inline(never)]
 fn report_unknown(what: &str, func: &str, id: c_int) {
     msg::warn(&format!("{func}: invalid {what} id <{id}>"));
 }

@@ -7,6 +7,7 @@
 
 mod alloc;
 mod api;
+mod barrier;
 mod msg;
 mod panic;
 mod registry;

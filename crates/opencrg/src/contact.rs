@@ -23,6 +23,7 @@ pub struct ContactPoint {
     history: History,
 }
 
+#[inline]
 fn finite(a: f64, b: f64) -> Result<()> {
     if a.is_nan() || b.is_nan() {
         Err(Error::Eval("NaN input"))
@@ -115,12 +116,14 @@ impl ContactPoint {
     }
 
     /// x/y of (u, v).
+    #[inline]
     pub fn uv_to_xy(&self, u: f64, v: f64) -> Result<(f64, f64)> {
         finite(u, v)?;
         Ok(eval::uv_to_xy(&self.road, &self.eval, u, v))
     }
 
     /// Elevation at (u, v); an error where a border mode of none refuses.
+    #[inline]
     pub fn uv_to_z(&self, u: f64, v: f64) -> Result<f64> {
         finite(u, v)?;
         // A match, not `ok_or`: building (and dropping) an unused error costs in this hot path.
@@ -131,12 +134,14 @@ impl ContactPoint {
     }
 
     /// Heading and curvature at (u, v).
+    #[inline]
     pub fn uv_to_pk(&self, u: f64, v: f64) -> Result<(f64, f64)> {
         finite(u, v)?;
         Ok(eval::uv_to_pk(&self.road, &self.eval, u, v))
     }
 
     /// (u, v) of the point (x, y).
+    #[inline]
     pub fn xy_to_uv(&mut self, x: f64, y: f64) -> Result<(f64, f64)> {
         finite(x, y)?;
         let road = &*self.road;
@@ -144,6 +149,7 @@ impl ContactPoint {
     }
 
     /// Elevation at the point (x, y).
+    #[inline]
     pub fn xy_to_z(&mut self, x: f64, y: f64) -> Result<f64> {
         let (u, v) = self.xy_to_uv(x, y)?;
         self.uv_to_z(u, v)

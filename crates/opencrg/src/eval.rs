@@ -426,23 +426,22 @@ fn uv_to_z_borders(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option
 /// Heading and curvature at (u, v). The heading is that of the reference line
 /// segment holding u; the curvature comes from points 0.5 m apart (at least one
 /// increment) and, in lateral curvature mode, is that of the parallel at v.
+#[inline]
 pub fn uv_to_pk(road: &Road, options: &EvalOptions, u: f64, v: f64) -> (f64, f64) {
     let l = &road.line;
     let u = wrap_closed_u(l, options, u);
     let (iu, _) = l.interval(u);
-    let nu = l.curvature_step();
-    let phi_len = l.phi.as_ref().map_or(0, Vec::len);
+    let nu = l.curv_step;
     if nu > iu {
         return (l.phi_first, 0.0);
     }
-    if iu + nu >= phi_len {
+    let Some(phi) = l.phi.as_deref().filter(|p| iu + nu < p.len()) else {
         return (l.phi_last, 0.0);
-    }
+    };
     let mut curv = l.curvature[iu];
     if options.curv_lateral && curv.abs() > 1e-10 {
         let radius = 1.0 / curv - v;
         curv = if radius.abs() < 1e-6 { 1e6 } else { 1.0 / radius };
     }
-    let phi = l.phi.as_ref().map_or(l.phi_last, |p| p[iu + 1]);
-    (phi, curv)
+    (phi[iu + 1], curv)
 }

@@ -76,6 +76,8 @@ pub struct RefLine {
     pub(crate) normals: Vec<[f64; 4]>,
     /// Per cross section: the reference line curvature over 0.5 m (see [`RefLine::curvature_step`]).
     pub(crate) curvature: Vec<f64>,
+    /// [`RefLine::curvature_step`] as of the last cache update.
+    pub(crate) curv_step: usize,
 }
 
 /// Cached sines and cosines of the end headings.
@@ -180,6 +182,7 @@ impl RefLine {
             closed: None,
             normals: Vec::new(),
             curvature: Vec::new(),
+            curv_step: 1,
         })
     }
 
@@ -343,6 +346,7 @@ impl RefLine {
             })
             .collect();
         let k = self.curvature_step();
+        self.curv_step = k;
         self.curvature = (0..n).map(|i| if i >= k && i + k < n { self.curvature_at(i, k) } else { 0.0 }).collect();
     }
 

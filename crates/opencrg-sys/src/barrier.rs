@@ -1,0 +1,64 @@
+//! A memory barrier executed by every running thread of the process.
+//!
+//! The contact points' owner path (see `registry`) marks a slot busy with a plain
+//! store and then reads whether its ownership still stands; a processor may let
+//! that read pass the store. The rare thread that revokes an ownership makes up
+//! for it by running a barrier on every thread at once, with Linux's
+//! `membarrier(MEMBARRIER_CMD_PRIVATE_EXPEDITED)`. Where that is not available
+//! (another system, an old kernel, a sandbox refusing the call) no thread is ever
+//! made owner and every access takes the lock.
+
+use std::sync::atomic::{fence, Ordering};
+use std::sync::OnceLock;
+
+#[cfg(target_os = "linux")]
+mod sys {
+    use std::ffi::c_int;
+
+    const PRIVATE_EXPEDITED: c_int = 1 << 3;
+    const REGISTER_PRIVATE_EXPEDITED: c_int = 1 << 4;
+
+    fn membarrier(cmd: c_int) -> bool {
+        // SAFETY: membarrier takes no pointers; an unknown command only fails.
+        unsafe { libc::syscall(libc::SYS_membarrier, cmd, 0 as c_int, 0 as c_int) == 0 }
+    }
+
+    pub fn register() -> bool {
+        membarrier(REGISTER_PRIVATE_EXPEDITED)
+    }
+
+    pub fn run() -> bool {
+        membarrier(PRIVATE_EXPEDITED)
+    }
+}
+
+#[cfg(not(target_os = "linux"))]
+mod sys {
+    pub fn register() -> bool {
+        false
+    }
+
+    pub fn run() -> bool {
+        false
+    }
+}
+
+static REGISTERED: OnceLock<bool> = OnceLock::new();
+
+/// Whether [`everywhere`] can run (registers the process on first use).
+pub fn available() -> bool {
+    *REGISTERED.get_or_init(sys::register)
+}
+
+/// Runs a full memory barrier on every running thread of the process. Only called
+/// after [`available`] said yes.
+pub fn everywhere() {
+    fence(Ordering::SeqCst);
+    if !(available() && sys::run()) {
+        // The kernel accepted the registration, after which the call cannot fail;
+        // going on without the barrier could corrupt a contact point.
+        crate::msg::fatal("membarrier failed after a successful registration; stopping");
+        std::process::abort();
+    }
+    fence(Ordering::SeqCst);
+}
