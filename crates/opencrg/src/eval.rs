@@ -29,6 +29,8 @@ pub struct EvalOptions {
     offset_v: f64,
     smooth_begin: Option<f64>,
     smooth_end: Option<f64>,
+    /// Neither smoothing zone is set.
+    no_smoothing: bool,
     curv_lateral: bool,
     close_track: bool,
     /// The reference library's x/y search tests option id 1 (the u border mode) for
@@ -45,6 +47,7 @@ impl From<&Settings> for EvalOptions {
             offset_v: o.get_double(opt::BORDER_OFFSET_V).unwrap_or(0.0),
             smooth_begin: o.get_double(opt::SMOOTH_U_BEGIN),
             smooth_end: o.get_double(opt::SMOOTH_U_END),
+            no_smoothing: o.get_double(opt::SMOOTH_U_BEGIN).is_none() && o.get_double(opt::SMOOTH_U_END).is_none(),
             curv_lateral: o.has_int(opt::CURV_MODE, 0),
             close_track: o.has_int(opt::REFLINE_CONTINUE, 1),
             closed_search: o.has_int(opt::BORDER_MODE_U, 1),
@@ -214,29 +217,36 @@ fn surface(
     let (l, g) = (&road.line, &road.grid);
     let mut z = 0.0;
     if with_values {
-        let row = &g.z[iu * g.nv..(iu + 2) * g.nv];
-        let next = g.nv;
-        let z00 = f64::from(row[iv]);
-        let z10 = f64::from(row[next + iv]) - z00;
-        let mut z01 = f64::from(row[iv + 1]);
-        let z11 = f64::from(row[next + iv + 1]) - (z10 + z01);
+        // The four corners: (iu, iv), (iu, iv + 1), and the same one row further.
+        let (base, next) = (iu * g.nv + iv, g.nv);
+        let cell = &g.z[base..base + next + 2];
+        let z00 = f64::from(cell[0]);
+        let z10 = f64::from(cell[next]) - z00;
+        let mut z01 = f64::from(cell[1]);
+        let z11 = f64::from(cell[next + 1]) - (z10 + z01);
         z01 -= z00;
         z = (z11 * fv + z10) * fu + z01 * fv + z00;
         z += g.mean;
     }
     let fu = fu.clamp(0.0, 1.0);
     z += match &l.z {
-        Some(rz) => rz[iu] + fu * (rz[iu + 1] - rz[iu]),
+        Some(rz) => lerp(&rz[iu..iu + 2], fu),
         None => l.z_first,
     };
     if l.has_bank && with_bank {
         let bank = match &l.bank {
-            Some(b) => b[iu] + fu * (b[iu + 1] - b[iu]),
+            Some(b) => lerp(&b[iu..iu + 2], fu),
             None => l.bank_first,
         };
         z += bank * v_bank;
     }
     z
+}
+
+/// The value a fraction `f` of the way from `pair[0]` to `pair[1]`.
+#[inline(always)]
+fn lerp(pair: &[f64], f: f64) -> f64 {
+    pair[0] + f * (pair[1] - pair[0])
 }
 
 /// The v interval of an uneven grid holding `pos`, and the fraction within it.
@@ -252,13 +262,7 @@ pub fn uv_to_z(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<f64
     let g = &road.grid;
     // Inside the data and without smoothing zones no option matters (and u inside the
     // data is inside any closed-track range): the straight way, same formulas.
-    if options.smooth_begin.is_none()
-        && options.smooth_end.is_none()
-        && u >= l.u_first
-        && u <= l.u_last
-        && v >= g.v_first
-        && v <= g.v_last
-    {
+    if options.no_smoothing && u >= l.u_first && u <= l.u_last && v >= g.v_first && v <= g.v_last {
         let mut fu = (u - l.u_first) / l.u_inc;
         let iu = clamp_index(&mut fu, l.n);
         let (iv, fv) = match g.layout {

@@ -13,7 +13,7 @@ pub enum VLayout {
 }
 
 /// Elevation grid stored cross section by cross section (`z[iu * nv + iv]`).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, PartialEq)]
 pub struct Grid {
     /// Number of cross sections (u samples).
     pub nu: usize,
@@ -33,6 +33,12 @@ pub struct Grid {
     pub v_inc: f64,
     /// How the v positions were defined.
     pub layout: VLayout,
+}
+
+impl Clone for Grid {
+    fn clone(&self) -> Self {
+        Grid { z: crate::memory::large_copy(&self.z), v: self.v.clone(), ..*self }
+    }
 }
 
 impl Grid {

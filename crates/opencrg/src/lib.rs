@@ -23,6 +23,7 @@ mod error;
 pub mod eval;
 pub mod grid;
 pub mod header;
+mod memory;
 mod modifiers;
 pub mod reader;
 pub mod records;

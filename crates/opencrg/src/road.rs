@@ -167,7 +167,7 @@ impl Road {
         if estimate.saturating_mul(nv) > MAX_CELLS {
             return Err(err("data section", format!("{estimate} x {nv} cells exceed the supported size")));
         }
-        let mut z: Vec<f32> = Vec::with_capacity(estimate.saturating_mul(nv));
+        let mut z: Vec<f32> = crate::memory::large_vec(estimate.saturating_mul(nv));
         let mut b = Builder::new(&cols, estimate);
         let section_cols: Vec<usize> = sections.iter().map(|s| s.1).collect();
         // Decoded pages of a mapped file are handed back as decoding advances, so the
