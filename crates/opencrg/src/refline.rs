@@ -74,6 +74,8 @@ pub struct RefLine {
     pub closed: Option<(f64, f64)>,
     /// Per segment: the scaled normals at its start and end point (see [`RefLine::update_caches`]).
     pub(crate) normals: Vec<[f64; 4]>,
+    /// Per segment: its length (what the x/y search divides by to get v).
+    pub(crate) seg_len: Vec<f64>,
     /// Per cross section: the reference line curvature over 0.5 m (see [`RefLine::curvature_step`]).
     pub(crate) curvature: Vec<f64>,
     /// [`RefLine::curvature_step`] as of the last cache update.
@@ -181,6 +183,7 @@ impl RefLine {
             trig: Trig::default(),
             closed: None,
             normals: Vec::new(),
+            seg_len: Vec::new(),
             curvature: Vec::new(),
             curv_step: 1,
         })
@@ -343,6 +346,14 @@ impl RefLine {
                 let n2 = if i + 2 < n { normalized(-(ys[i + 2] - p1.1), xs[i + 2] - p1.0) } else { n12 };
                 let (a, b) = (stretch(n1, n12), stretch(n2, n12));
                 [a.0, a.1, b.0, b.1]
+            })
+            .collect();
+        self.seg_len = xs
+            .windows(2)
+            .zip(ys.windows(2))
+            .map(|(x, y)| {
+                let (dx, dy) = (x[1] - x[0], y[1] - y[0]);
+                (dx * dx + dy * dy).sqrt()
             })
             .collect();
         let k = self.curvature_step();

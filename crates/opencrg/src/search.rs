@@ -276,7 +276,9 @@ pub(crate) fn xy_to_uv(
     y: f64,
 ) -> (f64, f64) {
     let n = line.n;
-    let (xs, ys) = (&line.x, &line.y);
+    // Slices of exactly n points: with k kept in 1..n, the indexing below needs no
+    // further bounds checks.
+    let (xs, ys) = (&line.x[..n], &line.y[..n]);
     let closed = &line.closed;
     let start = match history.lookup(x, y) {
         Some(i) => i.min(n - 1),
@@ -342,7 +344,7 @@ pub(crate) fn xy_to_uv(
 
     let (x2x1, y2y1) = (x2 - x1, y2 - y1);
     let (xxx1, yyy1) = (x - x1, y - y1);
-    let mut v = (x2x1 * yyy1 - y2y1 * xxx1) / (x2x1 * x2x1 + y2y1 * y2y1).sqrt();
+    let mut v = (x2x1 * yyy1 - y2y1 * xxx1) / line.seg_len[k - 1];
     let p1 = (k + 1).min(n - 1);
     let (x3x1, y3y1) = (xs[p1] - x1, ys[p1] - y1);
     let (x2x0, y2y0) = (x2 - x0, y2 - y0);
