@@ -123,8 +123,9 @@ impl ContactPoint {
     }
 
     /// Elevation at (u, v); an error where a border mode of none refuses.
-    #[inline]
+    #[inline(always)]
     pub fn uv_to_z(&self, u: f64, v: f64) -> Result<f64> {
+        self.road.prefetch.prefetch(&self.road, u, v);
         finite(u, v)?;
         // A match, not `ok_or`: building (and dropping) an unused error costs in this hot path.
         match eval::uv_to_z(&self.road, &self.eval, u, v) {
@@ -152,7 +153,11 @@ impl ContactPoint {
     #[inline]
     pub fn xy_to_z(&mut self, x: f64, y: f64) -> Result<f64> {
         let (u, v) = self.xy_to_uv(x, y)?;
-        self.uv_to_z(u, v)
+        // Not `uv_to_z`: its prefetch would come too late to help here.
+        match eval::uv_to_z(&self.road, &self.eval, u, v) {
+            Some(z) => Ok(z),
+            None => Err(Error::Eval("outside the road with border mode none")),
+        }
     }
 
     /// Heading and curvature at the point (x, y).

@@ -23,6 +23,8 @@ pub struct Road {
     pub(crate) options: Settings,
     pub(crate) modifiers: Settings,
     pub(crate) index: SampleIndex,
+    /// Reciprocals of the increments, for the cache prefetch of elevation lookups.
+    pub(crate) prefetch: crate::eval::PrefetchHint,
 }
 
 /// Largest road accepted, in grid cells (guards against headers declaring absurd sizes).
@@ -209,7 +211,15 @@ impl Road {
             refline::RefLine::from_records(p, &cols, b, nu, u_first, u_inc).map_err(|m| err("reference line", m))?;
         let options = header.options.clone();
         let modifiers = header.modifiers.clone();
-        let mut road = Road { header, line, grid, options, modifiers, index: SampleIndex::default() };
+        let mut road = Road {
+            header,
+            line,
+            grid,
+            options,
+            modifiers,
+            index: SampleIndex::default(),
+            prefetch: Default::default(),
+        };
         road.prepare();
         Ok(road)
     }
@@ -224,6 +234,7 @@ impl Road {
         self.line.update_utility();
         self.line.update_caches();
         self.index = SampleIndex::build(&self.line);
+        self.prefetch = crate::eval::PrefetchHint::new(&self.line, &self.grid);
     }
 
     /// The header as read (comments, parameters, channels, options, modifiers).
