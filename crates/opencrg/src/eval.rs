@@ -282,14 +282,16 @@ impl PrefetchHint {
     pub(crate) fn prefetch(&self, road: &Road, u: f64, v: f64) {
         #[cfg(target_arch = "x86_64")]
         {
-            use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+            use std::arch::x86_64::{_mm_cvttsd_si64, _mm_prefetch, _mm_set_sd, _MM_HINT_T0};
             let (l, g) = (&road.line, &road.grid);
-            let iu = ((u - l.u_first) * self.inv_u_inc) as usize;
-            let iv = ((v - g.v_first) * self.inv_v_inc) as usize;
-            let p = g.z.as_ptr().wrapping_add(iu.wrapping_mul(g.nv).wrapping_add(iv));
-            // SAFETY: a prefetch never faults and reads nothing the program sees; the
-            // address is only computed (wrapping), never dereferenced.
+            let (eu, ev) = ((u - l.u_first) * self.inv_u_inc, (v - g.v_first) * self.inv_v_inc);
+            // SAFETY: SSE2 is part of every x86_64 target. The conversions truncate
+            // (out of range gives some far index: harmless, unlike the work Rust's
+            // saturating `as` does); the address is only computed, wrapping, never
+            // dereferenced; a prefetch never faults and reads nothing the program sees.
             unsafe {
+                let (iu, iv) = (_mm_cvttsd_si64(_mm_set_sd(eu)) as usize, _mm_cvttsd_si64(_mm_set_sd(ev)) as usize);
+                let p = g.z.as_ptr().wrapping_add(iu.wrapping_mul(g.nv).wrapping_add(iv));
                 _mm_prefetch(p.cast(), _MM_HINT_T0);
                 _mm_prefetch(p.wrapping_add(g.nv).cast(), _MM_HINT_T0);
             }
