@@ -16,6 +16,21 @@ static int on_message(int level, char *message)
     return 0;
 }
 
+/* A callback that calls the library again, on the ids whose call sent the message. */
+static int g_reenter_cp, g_reenter_ds, g_reentries;
+static int reentrant(int level, char *message)
+{
+    double a, b, d;
+    (void)level;
+    (void)message;
+    g_reentries++;
+    crgContactPointOptionGetDouble(g_reenter_cp, dCrgCpOptionRefLineClose, &d);
+    crgContactPointOptionSetDouble(g_reenter_cp, dCrgCpOptionRefLineClose, 0.3);
+    crgDataSetGetURange(g_reenter_ds, &a, &b);
+    crgDataSetModifierGetDouble(g_reenter_ds, dCrgModScaleZ, &d);
+    return 0;
+}
+
 static size_t g_callocs, g_frees;
 static void *my_calloc(size_t n, size_t s) { g_callocs++; return calloc(n, s); }
 static void *my_realloc(void *p, size_t s) { return realloc(p, s); }
@@ -207,6 +222,25 @@ int main(int argc, char **argv)
     crgMemRelease();
     CHECK(crgDataSetGetURange(id, &a, &b) == 0);
     crgMemRelease(); /* twice is fine */
+
+    /* messages sent while a call works on a contact point or a data set reach a
+     * callback that may call the library on the same ids (no deadlock) */
+    g_reenter_ds = crgLoaderReadFile(road);
+    g_reenter_cp = crgContactPointCreate(g_reenter_ds);
+    CHECK(g_reenter_ds > 0 && g_reenter_cp >= 0);
+    crgMsgSetLevel(dCrgMsgLevelNotice);
+    crgMsgSetCallback(reentrant);
+    CHECK(crgContactPointOptionSetDouble(g_reenter_cp, dCrgCpOptionBorderModeU, 1.0) == 0);
+    CHECK(g_reentries == 1);
+    crgContactPointOptionsPrint(g_reenter_cp);
+    CHECK(g_reentries > 1);
+    i = g_reentries;
+    crgDataPrintHeader(g_reenter_ds);
+    crgDataSetModifiersPrint(g_reenter_ds);
+    CHECK(crgDataSetModifierSetInt(g_reenter_ds, 99999, 1) == 0);
+    CHECK(g_reentries >= i + 3);
+    crgMsgSetCallback(NULL);
+    crgMemRelease();
 
     /* the warning budget */
     crgMsgSetCallback(NULL);

@@ -27,6 +27,38 @@ fn report_unknown(what: &str, func: &str, id: c_int) {
     msg::warn(&format!("{func}: invalid {what} id <{id}>"));
 }
 
+/// Runs `f` on a contact point; `None` (after a warning) for an unknown id. The
+/// contact point is released before this returns, so the caller may send messages
+/// (whose callback may call this library again).
+fn on_cp<T>(func: &str, id: c_int, f: impl FnOnce(&mut Cp) -> T) -> Option<T> {
+    let r = registry::with_cp(id, f);
+    if r.is_none() {
+        report_unknown("contact point", func, id);
+    }
+    r
+}
+
+/// Runs `f` on a data set's road, without holding the data set table (the road is
+/// shared, not locked); `None` (after a warning) for an unknown id.
+fn on_road<T>(func: &str, id: c_int, f: impl FnOnce(&Road) -> T) -> Option<T> {
+    let Some(road) = registry::with_dataset(id, |d| d.road.clone()) else {
+        report_unknown("data set", func, id);
+        return None;
+    };
+    Some(f(&road))
+}
+
+/// Runs `f` on a data set's road to change it; `None` (after a warning) for an unknown id.
+fn on_road_mut<T>(func: &str, id: c_int, f: impl FnOnce(&mut Road) -> T) -> Option<T> {
+    let r = registry::modify_road(id, f);
+    if r.is_none() {
+        report_unknown("data set", func, id);
+    }
+    r
+}
+
+/// `on_cp` inside the panic guard, `on_error` for an unknown id. `f` must not send messages.
+#[inline(always)]
 fn cp_call<R: Copy>(func: &str, id: c_int, on_error: R, f: impl FnOnce(&mut Cp) -> R) -> R {
     guard(func, on_error, || match registry::with_cp(id, f) {
         Some(r) => r,
@@ -37,24 +69,14 @@ fn cp_call<R: Copy>(func: &str, id: c_int, on_error: R, f: impl FnOnce(&mut Cp) 
     })
 }
 
+/// `on_road` inside the panic guard, `on_error` for an unknown id.
 fn road_read<R: Copy>(func: &str, id: c_int, on_error: R, f: impl FnOnce(&Road) -> R) -> R {
-    guard(func, on_error, || match registry::with_dataset(id, |d| f(&d.road)) {
-        Some(r) => r,
-        None => {
-            report_unknown("data set", func, id);
-            on_error
-        }
-    })
+    guard(func, on_error, || on_road(func, id, f).unwrap_or(on_error))
 }
 
+/// `on_road_mut` inside the panic guard, `on_error` for an unknown id. `f` must not send messages.
 fn road_write<R: Copy>(func: &str, id: c_int, on_error: R, f: impl FnOnce(&mut Road) -> R) -> R {
-    guard(func, on_error, || match registry::modify_road(id, f) {
-        Some(r) => r,
-        None => {
-            report_unknown("data set", func, id);
-            on_error
-        }
-    })
+    guard(func, on_error, || on_road_mut(func, id, f).unwrap_or(on_error))
 }
 
 fn ok(r: opencrg::Result<()>, func: &str) -> c_int {
@@ -113,12 +135,13 @@ pub extern "C" fn crgLoaderSuppressFileNotFoundFatalMsg(suppress: bool) {
 /// Checks a data set's options, modifiers and (when asked) curvature.
 #[no_mangle]
 pub extern "C" fn crgCheck(dataSetId: c_int) -> c_int {
-    road_write("crgCheck", dataSetId, 0, |r| match r.check() {
-        Ok(()) => 1,
-        Err(e) => {
+    guard("crgCheck", 0, || match on_road_mut("crgCheck", dataSetId, |r| r.check()) {
+        Some(Ok(())) => 1,
+        Some(Err(e)) => {
             msg::fatal(&format!("crgCheck: {e}"));
             0
         }
+        None => 0,
     })
 }
 
@@ -207,12 +230,20 @@ pub extern "C" fn crgDataSetGetUtilityDataClosedTrack(
 
 // ---------------------------------------------------------------- settings
 
-fn set_value(table: &mut Settings, id: c_uint, value: Value, func: &str) -> c_int {
+fn set_value(table: &mut Settings, id: c_uint, value: Value) -> opencrg::Result<()> {
     let r = match value {
         Value::Int(i) => table.set_int(id, i),
         Value::Double(d) => table.set_double(id, d),
     };
-    ok(r.map_err(Into::into), func)
+    r.map_err(Into::into)
+}
+
+/// Sets a modifier of a data set; 1, or 0 after a warning.
+fn set_modifier(func: &str, id: c_int, option: c_uint, value: Value) -> c_int {
+    guard(func, 0, || match on_road_mut(func, id, |r| set_value(r.modifiers_mut(), option, value)) {
+        Some(r) => ok(r, func),
+        None => 0,
+    })
 }
 
 fn get_int(table: &Settings, id: c_uint, out: *mut c_int) -> c_int {
@@ -238,17 +269,13 @@ fn get_double(table: &Settings, id: c_uint, out: *mut f64) -> c_int {
 /// Sets an integer modifier of a data set.
 #[no_mangle]
 pub extern "C" fn crgDataSetModifierSetInt(dataSetId: c_int, optionId: c_uint, optionValue: c_int) -> c_int {
-    road_write("crgDataSetModifierSetInt", dataSetId, 0, |r| {
-        set_value(r.modifiers_mut(), optionId, Value::Int(optionValue), "crgDataSetModifierSetInt")
-    })
+    set_modifier("crgDataSetModifierSetInt", dataSetId, optionId, Value::Int(optionValue))
 }
 
 /// Sets a double modifier of a data set.
 #[no_mangle]
 pub extern "C" fn crgDataSetModifierSetDouble(dataSetId: c_int, optionId: c_uint, optionValue: f64) -> c_int {
-    road_write("crgDataSetModifierSetDouble", dataSetId, 0, |r| {
-        set_value(r.modifiers_mut(), optionId, Value::Double(optionValue), "crgDataSetModifierSetDouble")
-    })
+    set_modifier("crgDataSetModifierSetDouble", dataSetId, optionId, Value::Double(optionValue))
 }
 
 /// Reads an integer modifier of a data set.
@@ -506,20 +533,27 @@ fn option_kind_ok(id: c_uint, kind: Kind) -> bool {
 /// Sets an integer option of a contact point.
 #[no_mangle]
 pub extern "C" fn crgContactPointOptionSetInt(cpId: c_int, optionId: c_uint, optionValue: c_int) -> c_int {
-    cp_call("crgContactPointOptionSetInt", cpId, 0, |cp| {
-        ok(cp.point.set_option_int(optionId, optionValue), "crgContactPointOptionSetInt")
+    let func = "crgContactPointOptionSetInt";
+    guard(func, 0, || match on_cp(func, cpId, |cp| cp.point.set_option_int(optionId, optionValue)) {
+        Some(r) => ok(r, func),
+        None => 0,
     })
 }
 
 /// Sets a double option of a contact point.
 #[no_mangle]
 pub extern "C" fn crgContactPointOptionSetDouble(cpId: c_int, optionId: c_uint, optionValue: f64) -> c_int {
-    cp_call("crgContactPointOptionSetDouble", cpId, 0, |cp| {
-        if !option_kind_ok(optionId, Kind::Double) {
-            msg::warn(&format!("crgContactPointOptionSetDouble: <{}> is not a double option", name(optionId)));
-            return 0;
+    let func = "crgContactPointOptionSetDouble";
+    guard(func, 0, || {
+        let kind_ok = option_kind_ok(optionId, Kind::Double);
+        match on_cp(func, cpId, |cp| kind_ok.then(|| cp.point.set_option_double(optionId, optionValue))) {
+            Some(Some(r)) => ok(r, func),
+            Some(None) => {
+                msg::warn(&format!("{func}: <{}> is not a double option", name(optionId)));
+                0
+            }
+            None => 0,
         }
-        ok(cp.point.set_option_double(optionId, optionValue), "crgContactPointOptionSetDouble")
     })
 }
 
@@ -553,7 +587,12 @@ pub extern "C" fn crgContactPointOptionRemoveAll(cpId: c_int) -> c_int {
 /// Prints the options of a contact point.
 #[no_mangle]
 pub extern "C" fn crgContactPointOptionsPrint(cpId: c_int) {
-    cp_call("crgContactPointOptionsPrint", cpId, (), |cp| print_settings(cp.point.options(), "option"))
+    let func = "crgContactPointOptionsPrint";
+    guard(func, (), || {
+        if let Some(options) = on_cp(func, cpId, |cp| cp.point.options().clone()) {
+            print_settings(&options, "option");
+        }
+    })
 }
 
 /// Restores the default options of a contact point.
