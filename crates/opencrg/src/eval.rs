@@ -479,6 +479,11 @@ fn uv_to_z_borders(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option
 #[inline]
 pub fn uv_to_pk(road: &Road, options: &EvalOptions, u: f64, v: f64) -> (f64, f64) {
     let l = &road.line;
+    if l.phi.is_none() && l.phi_first.to_bits() == l.phi_last.to_bits() {
+        // A straight line (no heading channel) with one heading: the answer below
+        // whatever u is, without the index arithmetic.
+        return (l.phi_first, 0.0);
+    }
     let u = wrap_closed_u(l, options, u);
     let (iu, _) = l.interval(u);
     let nu = l.curv_step;
