@@ -4,7 +4,10 @@
  *
  * usage: crg_bench load FILE             load time and peak memory (one load per process)
  *        crg_bench eval FILE N THREADS   queries per second of every call
- * CRG_BENCH_ONLY=uv2z_random,xy2z_path (say) measures only the figures named.
+ * With THREADS > 1 every figure is also measured on THREADS threads at once, each
+ * with a contact point of its own (figure name suffixed _<THREADS>threads).
+ * CRG_BENCH_ONLY=uv2z_random,xy2z_path (say) measures only the figures named
+ * ("threads" names every multi-thread figure).
  * Prints one "name value unit" line per figure.
  */
 #include <pthread.h>
@@ -50,10 +53,21 @@ static volatile double g_keep;
 
 typedef int (*Query)(int cp, long i);
 static const char *g_only;
-/* Whether the figure `name` is measured (all of them when CRG_BENCH_ONLY is unset). */
+/* Whether the figure `name` is measured: CRG_BENCH_ONLY unset, or naming it in its
+ * comma-separated list (the word "threads" names every multi-thread figure). */
 static int wanted(const char *name)
 {
-    return !g_only || strstr(g_only, name) != NULL;
+    if (!g_only)
+        return 1;
+    size_t len = strlen(name);
+    int threaded = strstr(name, "threads") != NULL;
+    for (const char *p = g_only; *p;) {
+        size_t n = strcspn(p, ",");
+        if ((n == len && !strncmp(p, name, n)) || (threaded && n == 7 && !strncmp(p, "threads", 7)))
+            return 1;
+        p += n + (p[n] == ',');
+    }
+    return 0;
 }
 
 static int q_uv2z(int cp, long i) { double z; int r = crgEvaluv2z(cp, g_u[i], g_v[i], &z); g_sink += z; return r; }
@@ -78,12 +92,48 @@ static double run(Query q, int cp, long n)
     return best;
 }
 
-struct Job { int cp; long n; double qps; };
+struct Job { Query q; int cp; long n; double qps; };
 static void *thread_main(void *arg)
 {
     struct Job *j = arg;
-    j->qps = run(q_uv2z, j->cp, j->n);
+    j->qps = run(j->q, j->cp, j->n);
     return NULL;
+}
+
+/* The sum of the rates of `threads` threads, each with a contact point of its own
+ * (all created before any thread starts; history < 0 keeps the default history). */
+static double run_threads(Query q, long n, int threads, int history)
+{
+    pthread_t t[64];
+    struct Job jobs[64];
+    double total = 0;
+    for (int k = 0; k < threads; k++) {
+        jobs[k] = (struct Job){ q, crgContactPointCreate(g_id), n, 0.0 };
+        if (history >= 0)
+            crgContactPointSetHistory(jobs[k].cp, history);
+    }
+    for (int k = 0; k < threads; k++)
+        pthread_create(&t[k], NULL, thread_main, &jobs[k]);
+    for (int k = 0; k < threads; k++) {
+        pthread_join(t[k], NULL);
+        total += jobs[k].qps;
+    }
+    for (int k = 0; k < threads; k++)
+        crgContactPointDelete(jobs[k].cp);
+    return total;
+}
+
+/* Prints the figure `name`: one thread on `cp`, then (with threads > 1) the same
+ * queries on `threads` threads at once. */
+static void measure(const char *name, Query q, int cp, long n, int threads, int history)
+{
+    char threaded[96];
+    snprintf(threaded, sizeof threaded, "%s_%dthreads", name, threads);
+    if (wanted(name))
+        printf("%s %.0f q/s\n", name, run(q, cp, n));
+    if (threads > 1 && wanted(threaded))
+        printf("%s %.0f q/s\n", threaded, run_threads(q, n, threads, history));
+    fflush(stdout);
 }
 
 int main(int argc, char **argv)
@@ -109,6 +159,8 @@ int main(int argc, char **argv)
     }
     g_n = argc > 3 ? atol(argv[3]) : 1000000;
     int threads = argc > 4 ? atoi(argv[4]) : 1;
+    if (threads < 1) threads = 1;
+    if (threads > 64) threads = 64;
     crgDataSetGetURange(g_id, &uMin, &uMax);
     crgDataSetGetVRange(g_id, &vMin, &vMax);
     g_u = malloc(sizeof(double) * g_n); g_v = malloc(sizeof(double) * g_n);
@@ -119,41 +171,19 @@ int main(int argc, char **argv)
         g_v[i] = vMin + (vMax - vMin) * rnd();
         crgEvaluv2xy(cp, g_u[i], g_v[i], &g_x[i], &g_y[i]);
     }
-    if (wanted("uv2z_random"))
-        printf("uv2z_random %.0f q/s\n", run(q_uv2z, cp, g_n));
-    if (wanted("uv2pk_random"))
-        printf("uv2pk_random %.0f q/s\n", run(q_uv2pk, cp, g_n));
-    if (wanted("uv2xy_random"))
-        printf("uv2xy_random %.0f q/s\n", run(q_uv2xy, cp, g_n));
+    measure("uv2z_random", q_uv2z, cp, g_n, threads, -1);
+    measure("uv2pk_random", q_uv2pk, cp, g_n, threads, -1);
+    measure("uv2xy_random", q_uv2xy, cp, g_n, threads, -1);
     /* x/y to u/v on random points with no history: every query searches afresh */
     int cp0 = crgContactPointCreate(g_id);
     crgContactPointSetHistory(cp0, 0);
-    long nr = g_n / 100;
-    if (wanted("xy2uv_random_nohistory"))
-        printf("xy2uv_random_nohistory %.0f q/s\n", run(q_xy2uv, cp0, nr));
+    measure("xy2uv_random_nohistory", q_xy2uv, cp0, g_n / 100, threads, 0);
     /* a vehicle path: u increasing, v weaving, x/y looked up with history */
     for (long i = 0; i < g_n; i++) {
         double u = uMin + (uMax - uMin) * i / g_n, v = 0.4 * (vMax - vMin) * sin(i * 1e-3);
         crgEvaluv2xy(cp, u, v, &g_x[i], &g_y[i]);
     }
-    if (wanted("xy2z_path"))
-        printf("xy2z_path %.0f q/s\n", run(q_xy2z, cp, g_n));
-    if (threads > 1 && wanted("threads")) {
-        pthread_t t[64];
-        struct Job jobs[64];
-        double total = 0;
-        if (threads > 64) threads = 64;
-        for (int k = 0; k < threads; k++) {
-            jobs[k].cp = crgContactPointCreate(g_id);
-            jobs[k].n = g_n;
-            pthread_create(&t[k], NULL, thread_main, &jobs[k]);
-        }
-        for (int k = 0; k < threads; k++) {
-            pthread_join(t[k], NULL);
-            total += jobs[k].qps;
-        }
-        printf("uv2z_random_%dthreads %.0f q/s\n", threads, total);
-    }
+    measure("xy2z_path", q_xy2z, cp, g_n, threads, -1);
     crgMemRelease();
     return 0;
 }
