@@ -676,6 +676,22 @@ pub extern "C" fn crgEvaluv2xy(cpId: c_int, u: f64, v: f64, x: *mut f64, y: *mut
 /// u/v to z.
 #[no_mangle]
 pub extern "C" fn crgEvaluv2z(cpId: c_int, u: f64, v: f64, z: *mut f64) -> c_int {
+    // The common case first: the calling thread owns the contact point and (u, v) is
+    // inside the road. Nothing in it can panic, so it needs no guard, and it makes no
+    // call, which keeps it short; everything else takes the general way below.
+    if !z.is_null() {
+        if let Some(Some(value)) = registry::with_owned_cp(cpId, |cp| cp.point.uv_to_z_plain(u, v)) {
+            put(z, value);
+            return 1;
+        }
+    }
+    uv2z_general(cpId, u, v, z)
+}
+
+/// `crgEvaluv2z` for every case but the common one (its own function, so that the
+/// common case needs no stack frame).
+#[inline(never)]
+fn uv2z_general(cpId: c_int, u: f64, v: f64, z: *mut f64) -> c_int {
     eval1("crgEvaluv2z", cpId, z, |cp| cp.point.uv_to_z(u, v))
 }
 

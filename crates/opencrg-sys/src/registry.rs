@@ -64,6 +64,17 @@ struct Slot {
 // busy mark set while ownership stands), never both at once (see `Slot`).
 unsafe impl Sync for Slot {}
 
+/// Waits a little: spins at first, then lets other threads run (the one being
+/// waited for may have been descheduled).
+fn back_off(spins: &mut u32) {
+    *spins += 1;
+    if *spins < 64 {
+        std::hint::spin_loop();
+    } else {
+        std::thread::yield_now();
+    }
+}
+
 /// Locked accesses in a row by one thread after which it becomes the owner.
 const OWNER_STREAK: u32 = 8;
 
@@ -138,19 +149,15 @@ impl Slot {
     fn lock(&self) -> SlotGuard<'_> {
         let mut spins = 0u32;
         while self.locked.compare_exchange_weak(false, true, Ordering::Acquire, Ordering::Relaxed).is_err() {
-            spins += 1;
-            if spins < 64 {
-                std::hint::spin_loop();
-            } else {
-                std::thread::yield_now();
-            }
+            back_off(&mut spins);
         }
         let owner = self.owner.load(Ordering::Relaxed);
         if owner != 0 && owner != thread_id() {
             self.owner.store(0, Ordering::Relaxed);
             crate::barrier::everywhere();
+            let mut spins = 0u32;
             while self.owner_busy.load(Ordering::Acquire) {
-                std::hint::spin_loop();
+                back_off(&mut spins);
             }
         }
         SlotGuard(self)
@@ -301,6 +308,17 @@ pub fn with_cp<R>(id: c_int, f: impl FnOnce(&mut Cp) -> R) -> Option<R> {
     let r = unsafe { &mut *s.cp.get() }.as_mut().map(f);
     drop(access);
     r
+}
+
+/// Runs `f` on a contact point when this thread owns it; `None` (without running
+/// `f`) otherwise: the first try of the hottest entry points, with no lock and no
+/// call. `f` must not panic (this runs outside any panic guard).
+#[inline(always)]
+pub fn with_owned_cp<R>(id: c_int, f: impl FnOnce(&Cp) -> R) -> Option<R> {
+    let s = slot(usize::try_from(id).ok()?)?;
+    let _busy = s.enter_as_owner(thread_id())?;
+    // SAFETY: the owner's busy mark is set while ownership stands.
+    unsafe { &*s.cp.get() }.as_ref().map(f)
 }
 
 /// Deletes one contact point.

@@ -134,6 +134,15 @@ impl ContactPoint {
         }
     }
 
+    /// Elevation at (u, v) for the common case only (inside an evenly spaced grid, no
+    /// smoothing zone); `None` for every other case, where [`ContactPoint::uv_to_z`]
+    /// answers. Never panics.
+    #[inline(always)]
+    pub fn uv_to_z_plain(&self, u: f64, v: f64) -> Option<f64> {
+        self.road.prefetch.prefetch(&self.road, u, v);
+        eval::uv_to_z_plain(&self.road, &self.eval, u, v)
+    }
+
     /// Heading and curvature at (u, v).
     #[inline]
     pub fn uv_to_pk(&self, u: f64, v: f64) -> Result<(f64, f64)> {

@@ -189,9 +189,9 @@ fn clamp_index(frac: &mut f64, n: usize) -> usize {
     }
     // Indices stay far below 2^63, so i64 conversions are exact. The test is written
     // so that NaN takes the clamping branch.
-    if !(*frac < (n - 1) as i64 as f64) {
+    if !(*frac < n.saturating_sub(1) as i64 as f64) {
         *frac = 1.0;
-        n - 2
+        n.saturating_sub(2)
     } else {
         // SAFETY: 0 <= frac < n - 1 here: finite and within i64.
         let i = unsafe { frac.to_int_unchecked::<i64>() };
@@ -201,7 +201,8 @@ fn clamp_index(frac: &mut f64, n: usize) -> usize {
 }
 
 /// The surface at interval (iu, fu) x (iv, fv): grid value (when `with_values`),
-/// reference line z, and banking times `v_bank`.
+/// reference line z, and banking times `v_bank`. Never panics: `None` where an index
+/// would leave the data (which the callers' index arithmetic rules out).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 fn surface(
@@ -213,40 +214,43 @@ fn surface(
     v_bank: f64,
     with_values: bool,
     with_bank: bool,
-) -> f64 {
+) -> Option<f64> {
     let (l, g) = (&road.line, &road.grid);
     let mut z = 0.0;
     if with_values {
         // The four corners: (iu, iv), (iu, iv + 1), and the same one row further.
-        let (base, next) = (iu * g.nv + iv, g.nv);
-        let cell = &g.z[base..base + next + 2];
-        let z00 = f64::from(cell[0]);
-        let z10 = f64::from(cell[next]) - z00;
-        let mut z01 = f64::from(cell[1]);
-        let z11 = f64::from(cell[next + 1]) - (z10 + z01);
+        let (base, next) = (iu.wrapping_mul(g.nv).wrapping_add(iv), g.nv);
+        let row = g.z.get(base..)?;
+        let &[c00, c01] = row.first_chunk::<2>()?;
+        let &[c10, c11] = row.get(next..)?.first_chunk::<2>()?;
+        let z00 = f64::from(c00);
+        let z10 = f64::from(c10) - z00;
+        let mut z01 = f64::from(c01);
+        let z11 = f64::from(c11) - (z10 + z01);
         z01 -= z00;
         z = (z11 * fv + z10) * fu + z01 * fv + z00;
         z += g.mean;
     }
     let fu = fu.clamp(0.0, 1.0);
     z += match &l.z {
-        Some(rz) => lerp(&rz[iu..iu + 2], fu),
+        Some(rz) => lerp(rz, iu, fu)?,
         None => l.z_first,
     };
     if l.has_bank && with_bank {
         let bank = match &l.bank {
-            Some(b) => lerp(&b[iu..iu + 2], fu),
+            Some(b) => lerp(b, iu, fu)?,
             None => l.bank_first,
         };
         z += bank * v_bank;
     }
-    z
+    Some(z)
 }
 
-/// The value a fraction `f` of the way from `pair[0]` to `pair[1]`.
+/// The value a fraction `f` of the way from `values[i]` to `values[i + 1]`.
 #[inline(always)]
-fn lerp(pair: &[f64], f: f64) -> f64 {
-    pair[0] + f * (pair[1] - pair[0])
+fn lerp(values: &[f64], i: usize, f: f64) -> Option<f64> {
+    let &[a, b] = values.get(i..)?.first_chunk::<2>()?;
+    Some(a + f * (b - a))
 }
 
 /// The v interval of an uneven grid holding `pos`, and the fraction within it.
@@ -301,16 +305,42 @@ impl PrefetchHint {
     }
 }
 
+/// Whether (u, v) lies inside the data with no smoothing zone set: then no option
+/// matters (and u inside the data is inside any closed-track range).
+#[inline(always)]
+fn plain_inside(road: &Road, options: &EvalOptions, u: f64, v: f64) -> bool {
+    let (l, g) = (&road.line, &road.grid);
+    options.no_smoothing && u >= l.u_first && u <= l.u_last && v >= g.v_first && v <= g.v_last
+}
+
+/// The u interval index and fraction of a u inside the data.
+#[inline(always)]
+fn u_cell(l: &RefLine, u: f64) -> (usize, f64) {
+    let mut fu = (u - l.u_first) / l.u_inc;
+    (clamp_index(&mut fu, l.n), fu)
+}
+
+/// Elevation at (u, v) for the common case only: inside an evenly spaced grid, no
+/// smoothing zone; `None` for every other case. Same answers as [`uv_to_z`], and it
+/// never panics, so a C entry point may call it before setting up its panic guard.
+#[inline(always)]
+pub fn uv_to_z_plain(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<f64> {
+    let g = &road.grid;
+    if !(plain_inside(road, options, u, v) && g.layout == VLayout::Indexed) {
+        return None;
+    }
+    let (iu, fu) = u_cell(&road.line, u);
+    let mut fv = (v - g.v_first) / g.v_inc;
+    let iv = clamp_index(&mut fv, g.nv);
+    surface(road, iu, fu, iv, fv, v, true, true)
+}
+
 /// Elevation at (u, v) with the given options; `None` when a border mode refuses.
 #[inline(always)]
 pub fn uv_to_z(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<f64> {
-    let l = &road.line;
     let g = &road.grid;
-    // Inside the data and without smoothing zones no option matters (and u inside the
-    // data is inside any closed-track range): the straight way, same formulas.
-    if options.no_smoothing && u >= l.u_first && u <= l.u_last && v >= g.v_first && v <= g.v_last {
-        let mut fu = (u - l.u_first) / l.u_inc;
-        let iu = clamp_index(&mut fu, l.n);
+    if plain_inside(road, options, u, v) {
+        let (iu, fu) = u_cell(&road.line, u);
         let (iv, fv) = match g.layout {
             VLayout::Indexed => {
                 let mut fv = (v - g.v_first) / g.v_inc;
@@ -318,7 +348,7 @@ pub fn uv_to_z(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<f64
             }
             VLayout::Explicit => explicit_v(g, v),
         };
-        return Some(surface(road, iu, fu, iv, fv, v, true, true));
+        return surface(road, iu, fu, iv, fv, v, true, true);
     }
     uv_to_z_borders(road, options, u, v)
 }
@@ -425,7 +455,7 @@ fn uv_to_z_borders(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option
     } else {
         v
     };
-    let mut z = surface(road, iu, ua.frac, iv, fv, vb, with_values, with_bank);
+    let mut z = surface(road, iu, ua.frac, iv, fv, vb, with_values, with_bank)?;
 
     let mut smooth = None;
     let (begin, end) = (options.smooth_begin, options.smooth_end);

@@ -267,3 +267,34 @@ fn nan_modifiers() {
     let zero = applied(holes(), &[(m::GRID_NAN_MODE, 1.0), (m::GRID_NAN_OFFSET, 0.25)]);
     assert_near!(zero.uv_to_z(2.0, 1.0).unwrap(), 0.25);
 }
+
+/// The common-case elevation (what the C entry point tries first) answers exactly
+/// where no option matters, with the general answer bit for bit, and nowhere else.
+#[test]
+fn plain_elevation_matches_the_general_one() {
+    let mut plain = 0;
+    for smoothing in [false, true] {
+        let mut c = cp(banked_sloped());
+        if smoothing {
+            c.set_option_double(opt::SMOOTH_U_BEGIN, 2.0).unwrap();
+        }
+        let (u0, u1) = c.road().u_range();
+        let (v0, v1) = c.road().v_range();
+        for i in -20..=220 {
+            for j in -20..=120 {
+                let (u, v) = (u0 + (u1 - u0) * f64::from(i) / 200.0, v0 + (v1 - v0) * f64::from(j) / 100.0);
+                let inside = (u0..=u1).contains(&u) && (v0..=v1).contains(&v);
+                match c.uv_to_z_plain(u, v) {
+                    Some(z) => {
+                        assert!(inside && !smoothing, "answered at ({u}, {v}), smoothing {smoothing}");
+                        assert_eq!(z.to_bits(), c.uv_to_z(u, v).unwrap().to_bits(), "at ({u}, {v})");
+                        plain += 1;
+                    }
+                    None => assert!(!inside || smoothing, "no answer inside at ({u}, {v})"),
+                }
+            }
+        }
+    }
+    assert!(plain > 10_000, "{plain} plain answers");
+    assert_eq!(cp(plane()).uv_to_z_plain(f64::NAN, 0.0), None);
+}
