@@ -7,9 +7,9 @@
 use crate::alloc;
 use crate::msg;
 use crate::panic::guard;
-use crate::registry::{self, Cp};
+use crate::registry;
 use opencrg::settings::{describe, name, Family, Kind, Value};
-use opencrg::{Road, Settings};
+use opencrg::{ContactPoint, Road, Settings};
 use std::ffi::{c_char, c_int, c_uint, c_void, CStr};
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -30,7 +30,8 @@ fn report_unknown(what: &str, func: &str, id: c_int) {
 /// Runs `f` on a contact point; `None` (after a warning) for an unknown id. The
 /// contact point is released before this returns, so the caller may send messages
 /// (whose callback may call this library again).
-fn on_cp<T>(func: &str, id: c_int, f: impl FnOnce(&mut Cp) -> T) -> Option<T> {
+#[inline(always)]
+fn on_cp<T>(func: &str, id: c_int, f: impl FnOnce(&mut ContactPoint) -> T) -> Option<T> {
     let r = registry::with_cp(id, f);
     if r.is_none() {
         report_unknown("contact point", func, id);
@@ -59,14 +60,8 @@ fn on_road_mut<T>(func: &str, id: c_int, f: impl FnOnce(&mut Road) -> T) -> Opti
 
 /// `on_cp` inside the panic guard, `on_error` for an unknown id. `f` must not send messages.
 #[inline(always)]
-fn cp_call<R: Copy>(func: &str, id: c_int, on_error: R, f: impl FnOnce(&mut Cp) -> R) -> R {
-    guard(func, on_error, || match registry::with_cp(id, f) {
-        Some(r) => r,
-        None => {
-            report_unknown("contact point", func, id);
-            on_error
-        }
-    })
+fn cp_call<R: Copy>(func: &str, id: c_int, on_error: R, f: impl FnOnce(&mut ContactPoint) -> R) -> R {
+    guard(func, on_error, || on_cp(func, id, f).unwrap_or(on_error))
 }
 
 /// `on_road` inside the panic guard, `on_error` for an unknown id.
@@ -534,7 +529,7 @@ fn option_kind_ok(id: c_uint, kind: Kind) -> bool {
 #[no_mangle]
 pub extern "C" fn crgContactPointOptionSetInt(cpId: c_int, optionId: c_uint, optionValue: c_int) -> c_int {
     let func = "crgContactPointOptionSetInt";
-    guard(func, 0, || match on_cp(func, cpId, |cp| cp.point.set_option_int(optionId, optionValue)) {
+    guard(func, 0, || match on_cp(func, cpId, |cp| cp.set_option_int(optionId, optionValue)) {
         Some(r) => ok(r, func),
         None => 0,
     })
@@ -546,7 +541,7 @@ pub extern "C" fn crgContactPointOptionSetDouble(cpId: c_int, optionId: c_uint, 
     let func = "crgContactPointOptionSetDouble";
     guard(func, 0, || {
         let kind_ok = option_kind_ok(optionId, Kind::Double);
-        match on_cp(func, cpId, |cp| kind_ok.then(|| cp.point.set_option_double(optionId, optionValue))) {
+        match on_cp(func, cpId, |cp| kind_ok.then(|| cp.set_option_double(optionId, optionValue))) {
             Some(Some(r)) => ok(r, func),
             Some(None) => {
                 msg::warn(&format!("{func}: <{}> is not a double option", name(optionId)));
@@ -560,26 +555,26 @@ pub extern "C" fn crgContactPointOptionSetDouble(cpId: c_int, optionId: c_uint, 
 /// Reads an integer option of a contact point.
 #[no_mangle]
 pub extern "C" fn crgContactPointOptionGetInt(cpId: c_int, optionId: c_uint, optionValue: *mut c_int) -> c_int {
-    cp_call("crgContactPointOptionGetInt", cpId, 0, |cp| get_int(cp.point.options(), optionId, optionValue))
+    cp_call("crgContactPointOptionGetInt", cpId, 0, |cp| get_int(cp.options(), optionId, optionValue))
 }
 
 /// Reads a double option of a contact point.
 #[no_mangle]
 pub extern "C" fn crgContactPointOptionGetDouble(cpId: c_int, optionId: c_uint, optionValue: *mut f64) -> c_int {
-    cp_call("crgContactPointOptionGetDouble", cpId, 0, |cp| get_double(cp.point.options(), optionId, optionValue))
+    cp_call("crgContactPointOptionGetDouble", cpId, 0, |cp| get_double(cp.options(), optionId, optionValue))
 }
 
 /// Removes one option of a contact point.
 #[no_mangle]
 pub extern "C" fn crgContactPointOptionRemove(cpId: c_int, optionId: c_uint) -> c_int {
-    cp_call("crgContactPointOptionRemove", cpId, 0, |cp| c_int::from(cp.point.remove_option(optionId)))
+    cp_call("crgContactPointOptionRemove", cpId, 0, |cp| c_int::from(cp.remove_option(optionId)))
 }
 
 /// Removes every option of a contact point.
 #[no_mangle]
 pub extern "C" fn crgContactPointOptionRemoveAll(cpId: c_int) -> c_int {
     cp_call("crgContactPointOptionRemoveAll", cpId, 0, |cp| {
-        cp.point.clear_options();
+        cp.clear_options();
         1
     })
 }
@@ -589,7 +584,7 @@ pub extern "C" fn crgContactPointOptionRemoveAll(cpId: c_int) -> c_int {
 pub extern "C" fn crgContactPointOptionsPrint(cpId: c_int) {
     let func = "crgContactPointOptionsPrint";
     guard(func, (), || {
-        if let Some(options) = on_cp(func, cpId, |cp| cp.point.options().clone()) {
+        if let Some(options) = on_cp(func, cpId, |cp| cp.options().clone()) {
             print_settings(&options, "option");
         }
     })
@@ -598,7 +593,7 @@ pub extern "C" fn crgContactPointOptionsPrint(cpId: c_int) {
 /// Restores the default options of a contact point.
 #[no_mangle]
 pub extern "C" fn crgContactPointSetDefaultOptions(cpId: c_int) {
-    cp_call("crgContactPointSetDefaultOptions", cpId, (), |cp| cp.point.reset_options())
+    cp_call("crgContactPointSetDefaultOptions", cpId, (), |cp| cp.reset_options())
 }
 
 /// Sets the size of a contact point's search history.
@@ -606,7 +601,7 @@ pub extern "C" fn crgContactPointSetDefaultOptions(cpId: c_int) {
 pub extern "C" fn crgContactPointSetHistory(cpId: c_int, histSize: c_int) -> c_int {
     cp_call("crgContactPointSetHistory", cpId, 0, |cp| match usize::try_from(histSize) {
         Ok(n) => {
-            cp.point.set_history(n);
+            cp.set_history(n);
             1
         }
         Err(_) => 0,
@@ -618,7 +613,7 @@ pub extern "C" fn crgContactPointSetHistory(cpId: c_int, histSize: c_int) -> c_i
 pub extern "C" fn crgContactPointSetHistoryForAllPoints(histSize: c_int) {
     guard("crgContactPointSetHistoryForAllPoints", (), || {
         if let Ok(n) = usize::try_from(histSize) {
-            registry::update_all_cps(|cp| cp.point.set_history(n));
+            registry::update_all_cps(|cp| cp.set_history(n));
         }
     })
 }
@@ -630,7 +625,7 @@ fn eval2(
     cp_id: c_int,
     a: *mut f64,
     b: *mut f64,
-    f: impl FnOnce(&mut Cp) -> opencrg::Result<(f64, f64)>,
+    f: impl FnOnce(&mut ContactPoint) -> opencrg::Result<(f64, f64)>,
 ) -> c_int {
     if a.is_null() || b.is_null() {
         return 0;
@@ -645,7 +640,7 @@ fn eval2(
     })
 }
 
-fn eval1(func: &str, cp_id: c_int, out: *mut f64, f: impl FnOnce(&mut Cp) -> opencrg::Result<f64>) -> c_int {
+fn eval1(func: &str, cp_id: c_int, out: *mut f64, f: impl FnOnce(&mut ContactPoint) -> opencrg::Result<f64>) -> c_int {
     if out.is_null() {
         return 0;
     }
@@ -664,13 +659,13 @@ fn eval1(func: &str, cp_id: c_int, out: *mut f64, f: impl FnOnce(&mut Cp) -> ope
 /// x/y to u/v.
 #[no_mangle]
 pub extern "C" fn crgEvalxy2uv(cpId: c_int, x: f64, y: f64, u: *mut f64, v: *mut f64) -> c_int {
-    eval2("crgEvalxy2uv", cpId, u, v, |cp| cp.point.xy_to_uv(x, y))
+    eval2("crgEvalxy2uv", cpId, u, v, |cp| cp.xy_to_uv(x, y))
 }
 
 /// u/v to x/y.
 #[no_mangle]
 pub extern "C" fn crgEvaluv2xy(cpId: c_int, u: f64, v: f64, x: *mut f64, y: *mut f64) -> c_int {
-    eval2("crgEvaluv2xy", cpId, x, y, |cp| cp.point.uv_to_xy(u, v))
+    eval2("crgEvaluv2xy", cpId, x, y, |cp| cp.uv_to_xy(u, v))
 }
 
 /// u/v to z.
@@ -680,7 +675,7 @@ pub extern "C" fn crgEvaluv2z(cpId: c_int, u: f64, v: f64, z: *mut f64) -> c_int
     // inside the road. Nothing in it can panic, so it needs no guard, and it makes no
     // call, which keeps it short; everything else takes the general way below.
     if !z.is_null() {
-        if let Some(Some(value)) = registry::with_owned_cp(cpId, |cp| cp.point.uv_to_z_plain(u, v)) {
+        if let Some(Some(value)) = registry::with_owned_cp(cpId, |cp| cp.uv_to_z_plain(u, v)) {
             put(z, value);
             return 1;
         }
@@ -692,23 +687,23 @@ pub extern "C" fn crgEvaluv2z(cpId: c_int, u: f64, v: f64, z: *mut f64) -> c_int
 /// common case needs no stack frame).
 #[inline(never)]
 fn uv2z_general(cpId: c_int, u: f64, v: f64, z: *mut f64) -> c_int {
-    eval1("crgEvaluv2z", cpId, z, |cp| cp.point.uv_to_z(u, v))
+    eval1("crgEvaluv2z", cpId, z, |cp| cp.uv_to_z(u, v))
 }
 
 /// x/y to z.
 #[no_mangle]
 pub extern "C" fn crgEvalxy2z(cpId: c_int, x: f64, y: f64, z: *mut f64) -> c_int {
-    eval1("crgEvalxy2z", cpId, z, |cp| cp.point.xy_to_z(x, y))
+    eval1("crgEvalxy2z", cpId, z, |cp| cp.xy_to_z(x, y))
 }
 
 /// u/v to heading and curvature.
 #[no_mangle]
 pub extern "C" fn crgEvaluv2pk(cpId: c_int, u: f64, v: f64, phi: *mut f64, curv: *mut f64) -> c_int {
-    eval2("crgEvaluv2pk", cpId, phi, curv, |cp| cp.point.uv_to_pk(u, v))
+    eval2("crgEvaluv2pk", cpId, phi, curv, |cp| cp.uv_to_pk(u, v))
 }
 
 /// x/y to heading and curvature.
 #[no_mangle]
 pub extern "C" fn crgEvalxy2pk(cpId: c_int, x: f64, y: f64, phi: *mut f64, curv: *mut f64) -> c_int {
-    eval2("crgEvalxy2pk", cpId, phi, curv, |cp| cp.point.xy_to_pk(x, y))
+    eval2("crgEvalxy2pk", cpId, phi, curv, |cp| cp.xy_to_pk(x, y))
 }

@@ -19,11 +19,6 @@ pub struct DataSet {
     pub road: Arc<Road>,
 }
 
-/// A contact point (its data set is kept by its slot).
-pub struct Cp {
-    pub point: ContactPoint,
-}
-
 static DATASETS: Mutex<Vec<DataSet>> = Mutex::new(Vec::new());
 
 const CHUNK: usize = 256;
@@ -56,7 +51,7 @@ struct Slot {
     dataset: AtomicI32,
     /// Which thread made the last locked accesses, and how many in a row (guarded by `locked`).
     streak: UnsafeCell<(usize, u32)>,
-    cp: UnsafeCell<Option<Cp>>,
+    cp: UnsafeCell<Option<ContactPoint>>,
 }
 
 // SAFETY: `cp` and `streak` are only reached through `SlotGuard` (which holds the
@@ -182,15 +177,15 @@ impl SlotGuard<'_> {
 }
 
 impl Deref for SlotGuard<'_> {
-    type Target = Option<Cp>;
-    fn deref(&self) -> &Option<Cp> {
+    type Target = Option<ContactPoint>;
+    fn deref(&self) -> &Option<ContactPoint> {
         // SAFETY: this guard holds the slot's lock and no owner works in the slot.
         unsafe { &*self.0.cp.get() }
     }
 }
 
 impl DerefMut for SlotGuard<'_> {
-    fn deref_mut(&mut self) -> &mut Option<Cp> {
+    fn deref_mut(&mut self) -> &mut Option<ContactPoint> {
         // SAFETY: this guard holds the slot's lock and no owner works in the slot.
         unsafe { &mut *self.0.cp.get() }
     }
@@ -244,8 +239,8 @@ pub fn modify_road<R>(id: c_int, f: impl FnOnce(&mut Road) -> R) -> Option<R> {
         (r, d.road.clone())
     })?;
     for_each_cp_of(Some(id), |cp| {
-        if !Arc::ptr_eq(cp.point.road(), &road) {
-            cp.point.set_road(road.clone());
+        if !Arc::ptr_eq(cp.road(), &road) {
+            cp.set_road(road.clone());
         }
     });
     Some(result)
@@ -283,38 +278,28 @@ pub fn create_cp(dataset: c_int) -> c_int {
         table.free.remove(&id);
     }
     let mut guard = s.lock();
-    *guard = Some(Cp { point: ContactPoint::new(road) });
+    *guard = Some(ContactPoint::new(road));
     s.dataset.store(dataset, Ordering::Relaxed);
     guard.note_access(thread_id());
     c_id
 }
 
-/// Exclusive access to a slot's contact point, one way or the other.
-enum Access<'a> {
-    Owner(#[allow(dead_code)] OwnerGuard<'a>),
-    Locked(#[allow(dead_code)] SlotGuard<'a>),
-}
-
 /// Runs `f` on a contact point; `None` for an unknown id.
 #[inline]
-pub fn with_cp<R>(id: c_int, f: impl FnOnce(&mut Cp) -> R) -> Option<R> {
+pub fn with_cp<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R) -> Option<R> {
     let s = slot(usize::try_from(id).ok()?)?;
     let me = thread_id();
-    let access = match s.enter_as_owner(me) {
-        Some(busy) => Access::Owner(busy),
-        None => Access::Locked(s.lock_for(me)),
-    };
-    // SAFETY: `access` grants exclusive access to the contact point until it is dropped.
-    let r = unsafe { &mut *s.cp.get() }.as_mut().map(f);
-    drop(access);
-    r
+    // Exclusive access one way or the other, held until this function returns.
+    let _access = s.enter_as_owner(me).ok_or_else(|| s.lock_for(me));
+    // SAFETY: `_access` grants exclusive access to the contact point while it lives.
+    unsafe { &mut *s.cp.get() }.as_mut().map(f)
 }
 
 /// Runs `f` on a contact point when this thread owns it; `None` (without running
 /// `f`) otherwise: the first try of the hottest entry points, with no lock and no
 /// call. `f` must not panic (this runs outside any panic guard).
 #[inline(always)]
-pub fn with_owned_cp<R>(id: c_int, f: impl FnOnce(&Cp) -> R) -> Option<R> {
+pub fn with_owned_cp<R>(id: c_int, f: impl FnOnce(&ContactPoint) -> R) -> Option<R> {
     let s = slot(usize::try_from(id).ok()?)?;
     let _busy = s.enter_as_owner(thread_id())?;
     // SAFETY: the owner's busy mark is set while ownership stands.
@@ -344,7 +329,7 @@ fn free_slot(table: &mut CpTable, id: usize, s: &Slot) {
 }
 
 /// Runs `f` on every contact point of a data set (`None`: of every data set).
-fn for_each_cp_of(dataset: Option<c_int>, mut f: impl FnMut(&mut Cp)) {
+fn for_each_cp_of(dataset: Option<c_int>, mut f: impl FnMut(&mut ContactPoint)) {
     let table = lock(&CP_TABLE);
     for i in 0..table.size {
         let Some(s) = slot(i) else { continue };
@@ -374,7 +359,7 @@ pub fn delete_cps_of(dataset: Option<c_int>) {
 }
 
 /// Applies `f` to every contact point.
-pub fn update_all_cps(f: impl FnMut(&mut Cp)) {
+pub fn update_all_cps(f: impl FnMut(&mut ContactPoint)) {
     for_each_cp_of(None, f);
 }
 
@@ -389,19 +374,19 @@ mod tests {
         create_cp(add_dataset(road))
     }
 
-    fn counter(cp: &Cp) -> f64 {
-        cp.point.options().get_double(opt::BORDER_OFFSET_U).unwrap_or(0.0)
+    fn counter(cp: &ContactPoint) -> f64 {
+        cp.options().get_double(opt::BORDER_OFFSET_U).unwrap_or(0.0)
     }
 
     /// Adds one to a counter kept in the contact point's options, by reading and
     /// writing it back (two steps: a second thread inside at the same time loses updates).
-    fn bump(cp: &mut Cp) {
+    fn bump(cp: &mut ContactPoint) {
         let v = counter(cp);
         // A wide window between the two steps, so that an overlap would show.
         for _ in 0..200 {
             std::hint::spin_loop();
         }
-        cp.point.set_option_double(opt::BORDER_OFFSET_U, v + 1.0).expect("a double option");
+        cp.set_option_double(opt::BORDER_OFFSET_U, v + 1.0).expect("a double option");
     }
 
     #[test]

@@ -23,6 +23,16 @@ pub struct ContactPoint {
     history: History,
 }
 
+/// An elevation, or the error of a border mode that refuses.
+#[inline(always)]
+fn elevation(z: Option<f64>) -> Result<f64> {
+    // A match, not `ok_or`: building (and dropping) an unused error costs in this hot path.
+    match z {
+        Some(z) => Ok(z),
+        None => Err(Error::Eval("outside the road with border mode none")),
+    }
+}
+
 #[inline]
 fn finite(a: f64, b: f64) -> Result<()> {
     if a.is_nan() || b.is_nan() {
@@ -127,11 +137,7 @@ impl ContactPoint {
     pub fn uv_to_z(&self, u: f64, v: f64) -> Result<f64> {
         self.road.prefetch.prefetch(&self.road, u, v);
         finite(u, v)?;
-        // A match, not `ok_or`: building (and dropping) an unused error costs in this hot path.
-        match eval::uv_to_z(&self.road, &self.eval, u, v) {
-            Some(z) => Ok(z),
-            None => Err(Error::Eval("outside the road with border mode none")),
-        }
+        elevation(eval::uv_to_z(&self.road, &self.eval, u, v))
     }
 
     /// Elevation at (u, v) for the common case only (inside an evenly spaced grid, no
@@ -163,10 +169,7 @@ impl ContactPoint {
     pub fn xy_to_z(&mut self, x: f64, y: f64) -> Result<f64> {
         let (u, v) = self.xy_to_uv(x, y)?;
         // Not `uv_to_z`: its prefetch would come too late to help here.
-        match eval::uv_to_z(&self.road, &self.eval, u, v) {
-            Some(z) => Ok(z),
-            None => Err(Error::Eval("outside the road with border mode none")),
-        }
+        elevation(eval::uv_to_z(&self.road, &self.eval, u, v))
     }
 
     /// Heading and curvature at the point (x, y).

@@ -29,8 +29,6 @@ pub struct EvalOptions {
     offset_v: f64,
     smooth_begin: Option<f64>,
     smooth_end: Option<f64>,
-    /// Neither smoothing zone is set.
-    no_smoothing: bool,
     curv_lateral: bool,
     close_track: bool,
     /// The reference library's x/y search tests option id 1 (the u border mode) for
@@ -47,7 +45,6 @@ impl From<&Settings> for EvalOptions {
             offset_v: o.get_double(opt::BORDER_OFFSET_V).unwrap_or(0.0),
             smooth_begin: o.get_double(opt::SMOOTH_U_BEGIN),
             smooth_end: o.get_double(opt::SMOOTH_U_END),
-            no_smoothing: o.get_double(opt::SMOOTH_U_BEGIN).is_none() && o.get_double(opt::SMOOTH_U_END).is_none(),
             curv_lateral: o.has_int(opt::CURV_MODE, 0),
             close_track: o.has_int(opt::REFLINE_CONTINUE, 1),
             closed_search: o.has_int(opt::BORDER_MODE_U, 1),
@@ -310,7 +307,12 @@ impl PrefetchHint {
 #[inline(always)]
 fn plain_inside(road: &Road, options: &EvalOptions, u: f64, v: f64) -> bool {
     let (l, g) = (&road.line, &road.grid);
-    options.no_smoothing && u >= l.u_first && u <= l.u_last && v >= g.v_first && v <= g.v_last
+    options.smooth_begin.is_none()
+        && options.smooth_end.is_none()
+        && u >= l.u_first
+        && u <= l.u_last
+        && v >= g.v_first
+        && v <= g.v_last
 }
 
 /// The u interval index and fraction of a u inside the data.
@@ -318,6 +320,13 @@ fn plain_inside(road: &Road, options: &EvalOptions, u: f64, v: f64) -> bool {
 fn u_cell(l: &RefLine, u: f64) -> (usize, f64) {
     let mut fu = (u - l.u_first) / l.u_inc;
     (clamp_index(&mut fu, l.n), fu)
+}
+
+/// The v interval index and fraction of a v inside an evenly spaced grid.
+#[inline(always)]
+fn v_cell(g: &crate::grid::Grid, v: f64) -> (usize, f64) {
+    let mut fv = (v - g.v_first) / g.v_inc;
+    (clamp_index(&mut fv, g.nv), fv)
 }
 
 /// Elevation at (u, v) for the common case only: inside an evenly spaced grid, no
@@ -330,8 +339,7 @@ pub fn uv_to_z_plain(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Opti
         return None;
     }
     let (iu, fu) = u_cell(&road.line, u);
-    let mut fv = (v - g.v_first) / g.v_inc;
-    let iv = clamp_index(&mut fv, g.nv);
+    let (iv, fv) = v_cell(g, v);
     surface(road, iu, fu, iv, fv, v, true, true)
 }
 
@@ -342,10 +350,7 @@ pub fn uv_to_z(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<f64
     if plain_inside(road, options, u, v) {
         let (iu, fu) = u_cell(&road.line, u);
         let (iv, fv) = match g.layout {
-            VLayout::Indexed => {
-                let mut fv = (v - g.v_first) / g.v_inc;
-                (clamp_index(&mut fv, g.nv), fv)
-            }
+            VLayout::Indexed => v_cell(g, v),
             VLayout::Explicit => explicit_v(g, v),
         };
         return surface(road, iu, fu, iv, fv, v, true, true);
