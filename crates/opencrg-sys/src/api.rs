@@ -7,6 +7,7 @@
 use crate::alloc;
 use crate::msg;
 use crate::panic::guard;
+use crate::profile;
 use crate::registry;
 use opencrg::settings::{describe, name, Family, Kind, Value};
 use opencrg::{ContactPoint, Road, Settings};
@@ -97,7 +98,14 @@ pub extern "C" fn crgLoaderReadFile(filename: *const c_char) -> c_int {
         // SAFETY: a non-null, NUL-terminated string from the caller.
         let bytes = unsafe { CStr::from_ptr(filename) }.to_bytes();
         let path = std::path::PathBuf::from(<std::ffi::OsStr as std::os::unix::ffi::OsStrExt>::from_bytes(bytes));
-        match Road::load(&path) {
+        let compat = match profile::compat() {
+            Ok(compat) => compat,
+            Err(e) => {
+                msg::fatal(&format!("crgLoaderReadFile: {e}; file <{}> not read", path.display()));
+                return 0;
+            }
+        };
+        match Road::load_with(&path, compat) {
             Ok(road) => {
                 for w in road.warnings() {
                     msg::warn(w);

@@ -10,6 +10,7 @@ mod api;
 mod barrier;
 mod msg;
 mod panic;
+mod profile;
 mod registry;
 
 pub use api::*;

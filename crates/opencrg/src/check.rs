@@ -1,5 +1,6 @@
 //! Consistency checks of a road, its options and its modifiers (as `crgCheck`).
 
+use crate::compat::Compat;
 use crate::error::{Error, Result};
 use crate::road::Road;
 use crate::settings::{m, opt, Settings};
@@ -16,7 +17,7 @@ impl Road {
             return Err(Error::Check("reference line can be closed but the u border mode is 1".into()));
         }
         check_options(&self.options)?;
-        check_modifiers(&mut self.modifiers)?;
+        check_modifiers(&mut self.modifiers, self.compat)?;
         let global = self.options.is_set(opt::WARN_CURV_GLOBAL);
         let local = self.options.is_set(opt::WARN_CURV_LOCAL);
         if (global || local) && !self.curvature_fits_width() {
@@ -106,7 +107,7 @@ fn check_options(o: &Settings) -> Result<()> {
     Ok(())
 }
 
-fn check_modifiers(mods: &mut Settings) -> Result<()> {
+fn check_modifiers(mods: &mut Settings, compat: Compat) -> Result<()> {
     for (id, name) in [(m::SCALE_LENGTH, "SCALE_LENGTH"), (m::SCALE_WIDTH, "SCALE_WIDTH")] {
         if let Some(v) = mods.get_double(id) {
             if v <= 0.0 {
@@ -163,7 +164,12 @@ fn check_modifiers(mods: &mut Settings) -> Result<()> {
                         what.to_uppercase()
                     )))
                 }
-                (false, false) => mods.set_double(frac, 0.0)?,
+                // Neither given: u starts at the first cross section; v is the
+                // reference line's (the releases took the right border).
+                (false, false) => {
+                    let default = if what == "v" && compat == Compat::Upstream { abs } else { frac };
+                    mods.set_double(default, 0.0)?
+                }
                 _ => {}
             }
         }

@@ -3,6 +3,7 @@
 //! These functions take the road and a set of options; [`ContactPoint`](crate::ContactPoint)
 //! wraps them with its own options and search history.
 
+use crate::compat::Compat;
 use crate::grid::VLayout;
 use crate::refline::RefLine;
 use crate::road::Road;
@@ -509,7 +510,7 @@ fn uv_to_z_borders(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option
 }
 
 /// Heading and curvature at (u, v). The heading is that of the reference line
-/// segment holding u; the curvature comes from points 0.5 m apart (at least one
+/// segment holding u (the releases' profile: the segment before it); the curvature comes from points 0.5 m apart (at least one
 /// increment) and, in lateral curvature mode, is that of the parallel at v.
 #[inline]
 pub fn uv_to_pk(road: &Road, options: &EvalOptions, u: f64, v: f64) -> (f64, f64) {
@@ -533,5 +534,9 @@ pub fn uv_to_pk(road: &Road, options: &EvalOptions, u: f64, v: f64) -> (f64, f64
         let radius = 1.0 / curv - v;
         curv = if radius.abs() < 1e-6 { 1e6 } else { 1.0 / radius };
     }
-    (phi[iu + 1], curv)
+    let heading = match road.compat {
+        Compat::Upstream => phi[iu + 1],
+        Compat::Release201 => phi[iu],
+    };
+    (heading, curv)
 }

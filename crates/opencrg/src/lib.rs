@@ -18,6 +18,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 mod check;
+mod compat;
 mod contact;
 mod error;
 pub mod eval;
@@ -34,6 +35,7 @@ pub mod settings;
 pub mod synth;
 pub mod writer;
 
+pub use compat::{Compat, UnknownCompat};
 pub use contact::ContactPoint;
 pub use error::{Error, Location, Result};
 pub use header::DataFormat;

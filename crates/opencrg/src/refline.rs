@@ -1,6 +1,7 @@
 //! The reference line: u axis, x/y points integrated from the heading channel (or a
 //! straight line), z integrated from the slope, banking, and closed-track data.
 
+use crate::compat::Compat;
 use crate::reader::RoadParams;
 use crate::road::{Builder, ColumnMap};
 
@@ -193,7 +194,12 @@ impl RefLine {
     /// or Euler steps along the heading channel. When the header gives the end
     /// point, a backward pass from the end is blended with the forward pass so the
     /// line meets both ends.
-    pub(crate) fn integrate_xy(&mut self) {
+    ///
+    /// The releases ([`Compat::Release201`]) start the forward pass from the point the
+    /// line already holds (the origin after loading, or the backward pass's first point)
+    /// instead of the header's start point.
+    pub(crate) fn integrate_xy(&mut self, compat: Compat) {
+        let from_start = compat == Compat::Upstream;
         let n = self.n;
         let inc = self.u_inc;
         let both_ends = self.defined.x_end && self.defined.y_end;
@@ -216,16 +222,20 @@ impl RefLine {
                 self.x[i - 1] = self.x[i] - inc * phi[i].cos();
                 self.y[i - 1] = self.y[i] - inc * phi[i].sin();
             }
-            self.x[0] = self.x_first;
-            self.y[0] = self.y_first;
+            if from_start {
+                self.x[0] = self.x_first;
+                self.y[0] = self.y_first;
+            }
             for i in 0..n - 1 {
                 let f = (i + 1) as f64 / (n - 1) as f64;
                 self.x[i + 1] = (1.0 - f) * (self.x[i] + inc * phi[i + 1].cos()) + f * self.x[i + 1];
                 self.y[i + 1] = (1.0 - f) * (self.y[i] + inc * phi[i + 1].sin()) + f * self.y[i + 1];
             }
         } else {
-            self.x[0] = self.x_first;
-            self.y[0] = self.y_first;
+            if from_start {
+                self.x[0] = self.x_first;
+                self.y[0] = self.y_first;
+            }
             for i in 0..n - 1 {
                 self.x[i + 1] = self.x[i] + inc * phi[i + 1].cos();
                 self.y[i + 1] = self.y[i] + inc * phi[i + 1].sin();

@@ -1,5 +1,6 @@
 //! The road: reference line and elevation grid, built from a file's header and data.
 
+use crate::compat::Compat;
 use crate::error::{Error, Location, Result};
 use crate::grid::{Grid, VLayout};
 use crate::header::{Channel, DataFormat};
@@ -25,6 +26,8 @@ pub struct Road {
     pub(crate) index: SampleIndex,
     /// Reciprocals of the increments, for the cache prefetch of elevation lookups.
     pub(crate) prefetch: crate::eval::PrefetchHint,
+    /// The reference behaviour the road follows.
+    pub(crate) compat: Compat,
 }
 
 /// Largest road accepted, in grid cells (guards against headers declaring absurd sizes).
@@ -37,6 +40,11 @@ impl Road {
     /// defaults) are not applied yet: call [`Road::apply_modifiers`] for that, as the
     /// classic API's `crgDataSetModifiersApply` does.
     pub fn load(path: impl AsRef<Path>) -> Result<Road> {
+        Road::load_with(path, Compat::default())
+    }
+
+    /// [`Road::load`] following the given reference behaviour.
+    pub fn load_with(path: impl AsRef<Path>, compat: Compat) -> Result<Road> {
         let path = path.as_ref();
         let (header, data) = reader::read(path)?;
         let data = data.ok_or_else(|| {
@@ -47,12 +55,17 @@ impl Road {
                 "no data section ($$$$ line) in the file or the files it references",
             )
         })?;
-        Road::build(header, data)
+        Road::build(header, data, compat)
     }
 
     /// Reads a CRG file held in memory. `name` stands for the file in messages;
     /// relative file references are looked up in the working folder and beside `name`.
     pub fn from_bytes(bytes: Vec<u8>, name: impl AsRef<Path>) -> Result<Road> {
+        Road::from_bytes_with(bytes, name, Compat::default())
+    }
+
+    /// [`Road::from_bytes`] following the given reference behaviour.
+    pub fn from_bytes_with(bytes: Vec<u8>, name: impl AsRef<Path>, compat: Compat) -> Result<Road> {
         let name = name.as_ref();
         let (header, data) = reader::read_bytes(bytes, name)?;
         let data = data.ok_or_else(|| {
@@ -63,10 +76,10 @@ impl Road {
                 "no data section ($$$$ line) in the file or the files it references",
             )
         })?;
-        Road::build(header, data)
+        Road::build(header, data, compat)
     }
 
-    fn build(header: Header, data: DataSource) -> Result<Road> {
+    fn build(header: Header, data: DataSource, compat: Compat) -> Result<Road> {
         let path = data.path.clone();
         let err = |field: &str, msg: String| Error::format(&path, Location::File, field, msg);
         let p = &header.road;
@@ -219,6 +232,7 @@ impl Road {
             modifiers,
             index: SampleIndex::default(),
             prefetch: Default::default(),
+            compat,
         };
         road.prepare();
         Ok(road)
@@ -228,13 +242,18 @@ impl Road {
     /// closed-track data, and the search index. Runs after loading and after
     /// modifiers that change the data.
     pub(crate) fn prepare(&mut self) {
-        self.line.integrate_xy();
+        self.line.integrate_xy(self.compat);
         self.line.integrate_z();
         self.grid.fold_mean();
         self.line.update_utility();
         self.line.update_caches();
         self.index = SampleIndex::build(&self.line);
         self.prefetch = crate::eval::PrefetchHint::new(&self.line, &self.grid);
+    }
+
+    /// The reference behaviour the road follows.
+    pub fn compat(&self) -> Compat {
+        self.compat
     }
 
     /// The header as read (comments, parameters, channels, options, modifiers).
