@@ -249,9 +249,11 @@ fn set_modifier(func: &str, id: c_int, option: c_uint, value: Value) -> c_int {
     })
 }
 
+/// Reads a setting as an integer: 1 when it is set, whatever its type (a double setting
+/// reads as 0, as the reference's separate integer field does).
 fn get_int(table: &Settings, id: c_uint, out: *mut c_int) -> c_int {
-    match (out.is_null(), describe(id), table.get(id)) {
-        (false, Some((_, Kind::Int)), Some(Value::Int(v))) => {
+    match table.get_int(id) {
+        Some(v) if !out.is_null() => {
             put(out, v);
             1
         }
@@ -259,9 +261,11 @@ fn get_int(table: &Settings, id: c_uint, out: *mut c_int) -> c_int {
     }
 }
 
+/// Reads a setting as a double: 1 when it is set, whatever its type (an integer setting
+/// reads as 0.0, as the reference's separate double field does).
 fn get_double(table: &Settings, id: c_uint, out: *mut f64) -> c_int {
-    match (out.is_null(), describe(id), table.get(id)) {
-        (false, Some((_, Kind::Double)), Some(Value::Double(v))) => {
+    match table.get_double(id) {
+        Some(v) if !out.is_null() => {
             put(out, v);
             1
         }

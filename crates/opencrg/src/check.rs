@@ -122,7 +122,14 @@ fn check_modifiers(mods: &mut Settings, compat: Compat) -> Result<()> {
     }
     if let Some(off) = mods.get_double(m::GRID_NAN_OFFSET) {
         match mods.get_int(m::GRID_NAN_MODE) {
-            None => mods.set_int(m::GRID_NAN_MODE, 2)?,
+            // The reference completes the mode with its default and then, reading the mode
+            // it did not find as 0, refuses the offset all the same.
+            None => {
+                mods.set_int(m::GRID_NAN_MODE, 2)?;
+                return Err(Error::Check(format!(
+                    "GRID_NAN_OFFSET {off} given without GRID_NAN_MODE (the mode is now 2, keep last; check again)"
+                )));
+            }
             Some(0) => {
                 return Err(Error::Check(format!("GRID_NAN_OFFSET {off} given with GRID_NAN_MODE 0 (keep NaN)")));
             }

@@ -55,6 +55,23 @@ pub struct RoadParams {
     /// WGS84 values (`REFERENCE_LINE_START_LON` ... `REFERENCE_LINE_END_ALT`) and any
     /// other key of the section, in file order.
     pub extra: Vec<(String, f64)>,
+    /// Which end values the top file itself gave. Only these choose how the reference
+    /// line is integrated: the reference library forgets which ones a referenced file
+    /// gave (it keeps their values, though).
+    pub top_file_gives: EndsGiven,
+}
+
+/// End values of the reference line that a file gave.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct EndsGiven {
+    /// `REFERENCE_LINE_END_X`.
+    pub x_end: bool,
+    /// `REFERENCE_LINE_END_Y`.
+    pub y_end: bool,
+    /// `REFERENCE_LINE_START_Z`.
+    pub z_start: bool,
+    /// `REFERENCE_LINE_END_Z`.
+    pub z_end: bool,
 }
 
 #[derive(Clone, Copy)]
@@ -400,7 +417,7 @@ impl Loader {
                     reference_line = line.number;
                     reference.push_str(&reference_piece(&text));
                 }
-                Section::Road => self.road_line(path, line.number, &text)?,
+                Section::Road => self.road_line(path, line.number, &text, level)?,
                 Section::Options | Section::Modifiers => self.setting_line(section, path, line.number, &text, level)?,
                 Section::Mpro => {
                     if let Some((k, v)) = key_value(&text) {
@@ -448,7 +465,7 @@ impl Loader {
         self.read_file(&target, level + 1)
     }
 
-    fn road_line(&mut self, path: &Path, number: usize, text: &str) -> Result<()> {
+    fn road_line(&mut self, path: &Path, number: usize, text: &str, level: usize) -> Result<()> {
         let Some((key, value)) = key_value(text) else {
             self.header.warnings.push(format!("{}:{number}: $ROAD_CRG: ignoring line without '='", path.display()));
             return Ok(());
@@ -459,7 +476,19 @@ impl Loader {
             return Ok(());
         }
         match lookup(&ROAD_KEYS, &key) {
-            Some((_, k)) => *self.header.road.slot(k) = Some(v),
+            Some((_, k)) => {
+                *self.header.road.slot(k) = Some(v);
+                if level == 0 {
+                    let given = &mut self.header.road.top_file_gives;
+                    match k {
+                        RoadKey::EndX => given.x_end = true,
+                        RoadKey::EndY => given.y_end = true,
+                        RoadKey::StartZ => given.z_start = true,
+                        RoadKey::EndZ => given.z_end = true,
+                        _ => {}
+                    }
+                }
+            }
             None => self.header.road.extra.push((field, v)),
         }
         Ok(())

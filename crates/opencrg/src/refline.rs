@@ -137,9 +137,6 @@ impl RefLine {
         } else {
             u_last = u_first + u_inc * (n - 1) as f64;
         }
-        if b.slope.iter().chain(b.bank.iter()).any(|v| v.is_nan()) {
-            return Err("slope or banking channel holds NaN".into());
-        }
         let phi_first = p.start_phi.unwrap_or(0.0);
         let phi = cols.phi.map(|_| {
             let mut phi = b.phi;
@@ -176,10 +173,10 @@ impl RefLine {
             z_first: p.start_z.unwrap_or(0.0),
             z_last: p.end_z.unwrap_or(0.0),
             defined: Defined {
-                x_end: p.end_x.is_some(),
-                y_end: p.end_y.is_some(),
-                z_start: p.start_z.is_some(),
-                z_end: p.end_z.is_some(),
+                x_end: p.top_file_gives.x_end,
+                y_end: p.top_file_gives.y_end,
+                z_start: p.top_file_gives.z_start,
+                z_end: p.top_file_gives.z_end,
             },
             trig: Trig::default(),
             closed: None,

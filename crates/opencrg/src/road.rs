@@ -219,9 +219,25 @@ impl Road {
                 "heading is NaN",
             ));
         }
+        // NaN in the slope or banking channel loads, as with the reference (PyOpenCRG writes
+        // NaN as the first value, which the integration never reads); elsewhere it makes the
+        // elevations around it NaN, which deserves a warning.
+        let mut channel_warnings = Vec::new();
+        for (values, col, name) in [(&b.slope, cols.slope, "slope"), (&b.bank, cols.bank, "banking")] {
+            if let Some(i) = values.iter().skip(1).position(|v| v.is_nan()) {
+                channel_warnings.push(format!(
+                    "{}: record {}, channel {}: reference line {name} is NaN; elevations there will be NaN",
+                    path.display(),
+                    i + 2,
+                    col.map_or(0, |c| c + 1)
+                ));
+            }
+        }
         let grid = Grid { nu, nv, z, mean: 0.0, v, v_first, v_last, v_inc, layout };
         let line =
             refline::RefLine::from_records(p, &cols, b, nu, u_first, u_inc).map_err(|m| err("reference line", m))?;
+        let mut header = header;
+        header.warnings.extend(channel_warnings);
         let options = header.options.clone();
         let modifiers = header.modifiers.clone();
         let mut road = Road {
