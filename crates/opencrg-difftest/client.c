@@ -115,6 +115,7 @@ int main(int argc, char **argv)
         return 2;
     }
     /* DIFFTEST_MSG_LEVEL=N shows the library's messages, to find out why answers differ. */
+    setvbuf(stdout, NULL, _IOLBF, 0); /* a hung call shows after the last complete line */
     crgMsgSetLevel(getenv("DIFFTEST_MSG_LEVEL") ? atoi(getenv("DIFFTEST_MSG_LEVEL")) : dCrgMsgLevelNone);
     while (fgets(line, sizeof line, script))
     {

@@ -12,8 +12,10 @@ const MODIFIERS: [(u32, bool, &[f64]); 24] = [
     (m::SCALE_Z, false, &[2.0, 0.5, -1.0, 0.0]),
     (m::SCALE_SLOPE, false, &[2.0, 0.0]),
     (m::SCALE_BANK, false, &[3.0, -1.0]),
-    (m::SCALE_LENGTH, false, &[2.0, 0.5, -1.0]),
-    (m::SCALE_WIDTH, false, &[1.5, 0.25, 0.0]),
+    // Not below 0: the reference hangs in x/y to u/v on a road of negative length.
+    (m::SCALE_LENGTH, false, &[2.0, 0.5]),
+    // Not 0: crgCheck refuses it, and the reference answers NaN where the road has no width.
+    (m::SCALE_WIDTH, false, &[1.5, 0.25]),
     (m::SCALE_CURVATURE, false, &[2.0, 0.5, -1.0, 0.0]),
     (m::GRID_NAN_MODE, true, &[0.0, 1.0, 2.0, 3.0]),
     (m::GRID_NAN_OFFSET, false, &[0.0, 0.1, -0.2]),
@@ -58,7 +60,7 @@ const OPTIONS: [(u32, bool, &[f64]); 17] = [
 
 /// One random script for the road in `road.crg`.
 pub fn generate(rng: &mut Rng) -> String {
-    let mut s = String::from("load road.crg\n");
+    let mut s = String::from("load road.crg\ninfo\n");
     let line = |s: &mut String, text: String| {
         s.push_str(&text);
         s.push('\n');

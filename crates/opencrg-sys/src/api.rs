@@ -218,10 +218,9 @@ pub extern "C" fn crgDataSetGetUtilityDataClosedTrack(
         if uIsClosed.is_null() || uCloseMin.is_null() || uCloseMax.is_null() {
             return 0;
         }
-        match registry::with_dataset(dataSetId, |d| d.road.closed_track()) {
-            Some(closed) => {
-                put(uIsClosed, c_int::from(closed.is_some()));
-                let (a, b) = closed.unwrap_or((0.0, 0.0));
+        match registry::with_dataset(dataSetId, |d| d.road.closed_track_report()) {
+            Some((closed, a, b)) => {
+                put(uIsClosed, c_int::from(closed));
                 put(uCloseMin, a);
                 put(uCloseMax, b);
                 1

@@ -114,15 +114,11 @@ impl ContactPoint {
         let _ = self.set_option_double(opt::REFLINE_FAR, DEFAULT_FAR);
     }
 
-    /// Gives the history `size` entries and resets the close and far distances to
-    /// 10 and 100 u increments (as the reference does).
+    /// Gives the history `size` entries (emptied). The close and far distances stay:
+    /// the reference meant to reset them to 10 and 100 u increments, but its test for
+    /// that never passes, and its answers follow what it does.
     pub fn set_history(&mut self, size: usize) {
         self.history.resize(size);
-        if size > 0 {
-            let inc = self.road.line.u_inc;
-            let close2 = 100.0 * inc * inc;
-            self.history.set_distances2(close2, 100.0 * close2);
-        }
     }
 
     /// x/y of (u, v).

@@ -165,13 +165,32 @@ fn repeat(frac: f64, max_frac: f64) -> f64 {
     }
 }
 
+/// The C conversion `(int) x` as the reference library gets it on x86-64: truncation
+/// toward zero, and `i32::MIN` for NaN and for values outside the `int` range. A road
+/// of zero width (v borders both 0, as when only `LONG_SECTION_V_INCREMENT` is given)
+/// sends infinities and NaN through it, and its answers depend on this value.
+#[inline]
+fn c_int(x: f64) -> i32 {
+    if x > -2147483649.0 && x < 2147483648.0 {
+        x as i32
+    } else {
+        i32::MIN
+    }
+}
+
+/// Whether C's `abs(n) % 2` is 1 (`abs(INT_MIN)` stays `INT_MIN`, which is even).
+#[inline]
+fn c_abs_is_odd(n: i32) -> bool {
+    n.wrapping_abs() % 2 != 0
+}
+
 /// Reflects a grid fraction into the data (border mode reflect); `periods` is how
 /// many data lengths the coordinate lies from the start.
 #[inline]
 fn reflect(frac: f64, periods: f64, max_frac: f64) -> f64 {
-    let rep = (periods as i32).unsigned_abs();
-    let f = frac.abs() - f64::from(rep) * max_frac;
-    if rep % 2 == 1 {
+    let rep = c_int(periods);
+    let f = frac.abs() - f64::from(rep.wrapping_abs()) * max_frac;
+    if c_abs_is_odd(rep) {
         max_frac - f
     } else {
         f
@@ -438,12 +457,12 @@ fn uv_to_z_borders(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option
                 } else if v_mode == REFLECT {
                     if pos > g.v_last {
                         let rem = (pos - g.v_last) % range;
-                        let rep = (((pos - g.v_last) / range) as i32).unsigned_abs();
-                        pos = if rep.is_multiple_of(2) { g.v_last - rem } else { g.v_first + rem };
+                        let rep = c_int((pos - g.v_last) / range);
+                        pos = if c_abs_is_odd(rep) { g.v_first + rem } else { g.v_last - rem };
                     } else if pos < g.v_first {
                         let rem = (pos - g.v_first) % range;
-                        let rep = (((pos - g.v_first) / range) as i32).unsigned_abs();
-                        pos = if rep % 2 == 1 { g.v_last + rem } else { g.v_first - rem };
+                        let rep = c_int((pos - g.v_first) / range);
+                        pos = if c_abs_is_odd(rep) { g.v_last + rem } else { g.v_first - rem };
                     }
                     v_in_core = true;
                 }

@@ -88,7 +88,12 @@ impl Road {
         }
         let outside_v = match g.layout {
             VLayout::Indexed => v < g.v_first || v > g.v_last,
-            VLayout::Explicit => v < g.v_first - eval::V_BORDER_SNAP || v > g.v_last + eval::V_BORDER_SNAP,
+            // Outside, unless within the snap distance of either border (even when the
+            // borders are inconsistent, as a right border past a missing left one).
+            VLayout::Explicit => {
+                let snaps = (v - g.v_first).abs() < eval::V_BORDER_SNAP || (v - g.v_last).abs() < eval::V_BORDER_SNAP;
+                (v < g.v_first || v > g.v_last) && !snaps
+            }
         };
         if outside_v {
             return 0.0;

@@ -273,6 +273,10 @@ pub struct Header {
     pub warn_msgs: Option<i32>,
     /// Things worth telling the user that did not stop the reading.
     pub warnings: Vec<String>,
+    /// Whether the top file itself numbered its long sections (`D:long section N`).
+    /// Evaluation finds v cells by index only then: the reference library forgets that
+    /// a referenced file numbered them, and looks numbered sections up by position.
+    pub top_file_numbers_sections: bool,
 }
 
 struct Loader {
@@ -325,6 +329,7 @@ impl Loader {
                 references: Vec::new(),
                 warn_msgs: None,
                 warnings: Vec::new(),
+                top_file_numbers_sections: false,
             },
             data: None,
             option_level: None,
@@ -424,7 +429,7 @@ impl Loader {
                         self.header.mpro.push((k, header::strip_inline_comment(v).trim().to_string()));
                     }
                 }
-                Section::DataDef => self.data_def_line(path, line.number, &text)?,
+                Section::DataDef => self.data_def_line(path, line.number, &text, level)?,
                 Section::None => {}
             }
         }
@@ -541,7 +546,7 @@ impl Loader {
         Ok(())
     }
 
-    fn data_def_line(&mut self, path: &Path, number: usize, text: &str) -> Result<()> {
+    fn data_def_line(&mut self, path: &Path, number: usize, text: &str, level: usize) -> Result<()> {
         let t = text.trim_start_matches(' ');
         if header::starts_with_ignore_case(t, "#:") {
             self.header.format = DataFormat::from_letters(&t[2..]).ok_or_else(|| {
@@ -555,6 +560,9 @@ impl Loader {
         } else if header::starts_with_ignore_case(t, "D:") {
             let channel = header::parse_channel(t)
                 .map_err(|e| Error::format(path, Location::Line(number), "$KD_Definition", e))?;
+            if level == 0 && matches!(channel, Channel::SectionIndex(_)) {
+                self.header.top_file_numbers_sections = true;
+            }
             self.header.channels.push(channel);
         } else if !header::starts_with_ignore_case(t, "U:") {
             self.header.warnings.push(format!("{}:{number}: $KD_Definition: ignoring line", path.display()));

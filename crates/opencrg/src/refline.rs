@@ -73,6 +73,9 @@ pub struct RefLine {
     pub(crate) trig: Trig,
     /// u range over which the line can be closed into a loop.
     pub closed: Option<(f64, f64)>,
+    /// The u range found the last time the line could be closed ((0, 0) before): what
+    /// the classic API reports, also after modifiers made the line open.
+    pub last_closed_range: (f64, f64),
     /// Per segment: the scaled normals at its start and end point (see [`RefLine::update_caches`]).
     pub(crate) normals: Vec<[f64; 4]>,
     /// Per segment: its length (what the x/y search divides by to get v).
@@ -180,6 +183,7 @@ impl RefLine {
             },
             trig: Trig::default(),
             closed: None,
+            last_closed_range: (0.0, 0.0),
             normals: Vec::new(),
             seg_len: Vec::new(),
             curvature: Vec::new(),
@@ -305,6 +309,7 @@ impl RefLine {
             }
         }
         self.closed = Some(range);
+        self.last_closed_range = range;
     }
 
     pub(crate) fn update_trig(&mut self) {

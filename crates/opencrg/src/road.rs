@@ -143,7 +143,7 @@ impl Road {
                 *x = v_first + i as f64 * v_inc;
             }
             v_last = p.v_left.unwrap_or(0.0);
-            layout = VLayout::Indexed;
+            layout = if header.top_file_numbers_sections { VLayout::Indexed } else { VLayout::Explicit };
         }
 
         // --- u axis ---
@@ -305,6 +305,14 @@ impl Road {
     /// The u range over which the reference line can be closed, if it can.
     pub fn closed_track(&self) -> Option<(f64, f64)> {
         self.line.closed
+    }
+
+    /// The closed-track data as the classic API reports it: whether the line can be
+    /// closed, and the u range found the last time it could be ((0, 0) if never), also
+    /// when modifiers have since made it open.
+    pub fn closed_track_report(&self) -> (bool, f64, f64) {
+        let (a, b) = self.line.last_closed_range;
+        (self.line.closed.is_some(), a, b)
     }
 
     /// Default options for new contact points (the file's options over the defaults).

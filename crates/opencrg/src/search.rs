@@ -58,12 +58,6 @@ impl History {
         self.far2 = distance * distance;
     }
 
-    /// Sets both distances from squared values.
-    pub fn set_distances2(&mut self, close2: f64, far2: f64) {
-        self.close2 = close2;
-        self.far2 = far2;
-    }
-
     /// Entry `j` (0 is the newest). `j` is below the length, so one conditional
     /// subtraction replaces a division in this hot path.
     #[inline]
