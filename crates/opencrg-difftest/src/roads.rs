@@ -209,8 +209,10 @@ pub fn generate(rng: &mut Rng, index: usize) -> RoadFiles {
             y += u_inc * phi_at(i).sin();
         }
         if rng.chance(0.5) {
-            x += rng.range(-0.3, 0.3);
-            y += rng.range(-0.3, 0.3);
+            // A little off, as rounding in files leaves it (far off, the line folds back
+            // and the reference's x/y search can loop forever).
+            x += rng.range(-0.01, 0.01) * length;
+            y += rng.range(-0.01, 0.01) * length;
         }
         kv("REFERENCE_LINE_END_X", x);
         kv("REFERENCE_LINE_END_Y", y);

@@ -33,11 +33,28 @@ pub struct Grid {
     pub v_inc: f64,
     /// How the v positions were defined.
     pub layout: VLayout,
+    /// Where the v search starts, at evenly spaced positions over `v_first..v_last`
+    /// (empty when that range is empty); see [`Grid::v_interval`].
+    pub(crate) v_table: Vec<usize>,
+}
+
+/// Entries of the v search table (as many as the reference library's).
+const V_TABLE_SIZE: usize = 200;
+
+/// `(size_t) x` as the reference library gets it on x86-64: truncation, and a huge
+/// index for negative values, NaN and values out of range.
+fn c_index(x: f64) -> usize {
+    let t = x.trunc();
+    if t >= 0.0 && t < 9.223372036854775808e18 {
+        t as usize
+    } else {
+        usize::MAX
+    }
 }
 
 impl Clone for Grid {
     fn clone(&self) -> Self {
-        Grid { z: crate::memory::large_copy(&self.z), v: self.v.clone(), ..*self }
+        Grid { z: crate::memory::large_copy(&self.z), v: self.v.clone(), v_table: self.v_table.clone(), ..*self }
     }
 }
 
@@ -48,11 +65,70 @@ impl Grid {
         self.z[iu * self.nv + iv]
     }
 
-    /// Index of the v interval holding `v`: the largest `i <= nv - 2` with `v[i] <= v`, or 0.
+    /// Index of the v interval for position `v` (0 to `nv - 2`), found as the reference
+    /// library finds it: a bisection between bounds taken from a table built over the
+    /// header's v range. Where the long sections lie inside that range (every
+    /// consistent file) this is the interval holding `v`; where the header's range
+    /// disagrees with the sections, the bounds (and so the answer) are the reference's.
     #[inline]
     pub fn v_interval(&self, v: f64) -> usize {
-        let n = self.v[..self.nv - 1].partition_point(|&x| x <= v);
-        n.saturating_sub(1)
+        let (mut lo, mut hi) = (0, self.nv - 1);
+        let t = &self.v_table;
+        if !t.is_empty() {
+            let last = t.len() - 1;
+            let slot = if v > self.v_first {
+                c_index((v - self.v_first) / (self.v_last - self.v_first) * last as f64).min(last)
+            } else {
+                0
+            };
+            let mut center = t[slot];
+            if self.v[center] <= v {
+                center += 1;
+            }
+            let center = center.min(last);
+            if slot > 0 {
+                lo = t[slot - 1];
+                if lo >= center && lo > 0 {
+                    lo -= 1;
+                }
+            }
+            if slot < last {
+                hi = t[slot + 1];
+                if hi <= center && hi < self.nv - 1 {
+                    hi += 1;
+                }
+            }
+        }
+        self.bisect(v, lo, hi)
+    }
+
+    /// Narrows `lo..hi` to one interval: `lo` moves up past sections at or below `v`,
+    /// `hi` down to sections above it.
+    #[inline]
+    fn bisect(&self, v: f64, mut lo: usize, mut hi: usize) -> usize {
+        loop {
+            let mid = (lo + hi) / 2;
+            if mid <= lo {
+                return lo;
+            }
+            match self.v.get(mid) {
+                Some(&at) if v < at => hi = mid,
+                _ => lo = mid,
+            }
+        }
+    }
+
+    /// Builds the table [`Grid::v_interval`] starts from: for evenly spaced positions
+    /// over `v_first..v_last`, the interval a full bisection finds.
+    pub(crate) fn build_v_table(&mut self) {
+        let range = self.v_last - self.v_first;
+        self.v_table = if range == 0.0 || self.nv < 2 {
+            Vec::new()
+        } else {
+            (0..V_TABLE_SIZE)
+                .map(|i| self.bisect(self.v_first + i as f64 * range / (V_TABLE_SIZE - 1) as f64, 0, self.nv - 1))
+                .collect()
+        };
     }
 
     /// Folds the mean offset into the stored values (as the reference does when it
@@ -143,6 +219,7 @@ mod tests {
             v_last: (nv - 1) as f64,
             v_inc: 1.0,
             layout: VLayout::Indexed,
+            v_table: Vec::new(),
         }
     }
 
@@ -159,7 +236,9 @@ mod tests {
 
     #[test]
     fn v_interval_search() {
-        let g = grid(vec![0.0; 4], 4);
+        let mut g = grid(vec![0.0; 4], 4);
+        g.build_v_table();
+        assert_eq!(g.v_table.len(), V_TABLE_SIZE);
         assert_eq!(g.v_interval(-1.0), 0);
         assert_eq!(g.v_interval(0.0), 0);
         assert_eq!(g.v_interval(1.5), 1);

@@ -233,7 +233,7 @@ impl Road {
                 ));
             }
         }
-        let grid = Grid { nu, nv, z, mean: 0.0, v, v_first, v_last, v_inc, layout };
+        let grid = Grid { nu, nv, z, mean: 0.0, v, v_first, v_last, v_inc, layout, v_table: Vec::new() };
         let line =
             refline::RefLine::from_records(p, &cols, b, nu, u_first, u_inc).map_err(|m| err("reference line", m))?;
         let mut header = header;
@@ -262,6 +262,7 @@ impl Road {
         self.line.integrate_z();
         self.grid.fold_mean();
         self.line.update_utility();
+        self.grid.build_v_table();
         self.line.update_caches();
         self.index = SampleIndex::build(&self.line);
         self.prefetch = crate::eval::PrefetchHint::new(&self.line, &self.grid);
