@@ -138,6 +138,11 @@ int main(int argc, char **argv)
     CHECK(crgDataSetModifierSetDouble(id + 100, dCrgModScaleZ, 2.0) == 0);
     CHECK(crgDataSetModifierGetDouble(id, dCrgModScaleZ, &d) == 1 && d == 2.0);
     CHECK(crgDataSetModifierGetDouble(id, dCrgModScaleZ, NULL) == 0);
+    /* A getter of the other type reads the set value's other field, 0, as the reference does. */
+    i = -1;
+    CHECK(crgDataSetModifierGetInt(id, dCrgModScaleZ, &i) == 1 && i == 0);
+    d = -1.0;
+    CHECK(crgDataSetModifierGetDouble(id, dCrgModGridNaNMode, &d) == 1 && d == 0.0);
     CHECK(crgDataSetModifierRemove(id, dCrgModScaleZ) == 1);
     CHECK(crgDataSetModifierGetDouble(id, dCrgModScaleZ, &d) == 0);
     CHECK(crgDataSetModifierRemove(id, 1000) == 0);
@@ -161,6 +166,8 @@ int main(int argc, char **argv)
     CHECK(crgContactPointOptionSetDouble(cp, dCrgCpOptionBorderOffsetV, 0.5) == 1);
     CHECK(crgContactPointOptionGetDouble(cp, dCrgCpOptionBorderOffsetV, &d) == 1 && d == 0.5);
     CHECK(crgContactPointOptionGetDouble(cp, dCrgCpOptionBorderOffsetV, NULL) == 0);
+    d = -1.0;
+    CHECK(crgContactPointOptionGetDouble(cp, dCrgCpOptionBorderModeU, &d) == 1 && d == 0.0);
     CHECK(crgContactPointOptionSetInt(cp + 100, dCrgCpOptionBorderModeU, 1) == 0);
     CHECK(crgContactPointOptionGetInt(-1, dCrgCpOptionBorderModeU, &i) == 0);
     g_messages = 0;
