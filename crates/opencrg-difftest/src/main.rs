@@ -8,6 +8,7 @@
 //! ```text
 //! crg-difftest --a INCLUDE_DIR:LIBRARY --b INCLUDE_DIR:LIBRARY
 //!              [--roads N] [--seed S] [--profile current|2.0.1] [--work DIR] [--show N]
+//!              [--timeout SECONDS]  (a client run that takes longer counts as hung; 10)
 //! crg-difftest --generate DIR [--roads N] [--seed S]     (roads and scripts only)
 //! ```
 //!
@@ -30,9 +31,6 @@ use std::time::{Duration, Instant};
 /// The client's source, built against each library.
 const CLIENT_SOURCE: &str = include_str!("../client.c");
 
-/// How long one client run may take before it counts as hung.
-const RUN_LIMIT: Duration = Duration::from_secs(10);
-
 struct Args {
     a: Option<(PathBuf, PathBuf)>,
     b: Option<(PathBuf, PathBuf)>,
@@ -42,11 +40,12 @@ struct Args {
     work: Option<PathBuf>,
     generate_only: Option<PathBuf>,
     show: usize,
+    timeout: Duration,
 }
 
 fn usage() -> String {
     "usage: crg-difftest --a INCLUDE_DIR:LIBRARY --b INCLUDE_DIR:LIBRARY [--roads N] [--seed S] \
-     [--profile current|2.0.1] [--work DIR] [--show N]\n       crg-difftest --generate DIR [--roads N] [--seed S]"
+     [--profile current|2.0.1] [--work DIR] [--show N] [--timeout SECONDS]\n       crg-difftest --generate DIR [--roads N] [--seed S]"
         .to_string()
 }
 
@@ -60,6 +59,7 @@ fn parse_args() -> Result<Args, String> {
         work: None,
         generate_only: None,
         show: 3,
+        timeout: Duration::from_secs(10),
     };
     let mut it = std::env::args().skip(1);
     while let Some(flag) = it.next() {
@@ -75,6 +75,7 @@ fn parse_args() -> Result<Args, String> {
             "--roads" => args.roads = number(value()?)? as usize,
             "--seed" => args.seed = number(value()?)?,
             "--show" => args.show = number(value()?)? as usize,
+            "--timeout" => args.timeout = Duration::from_secs(number(value()?)?.max(1)),
             "--profile" => {
                 args.profile = value()?;
                 if args.profile != "current" && args.profile != "2.0.1" {
@@ -130,7 +131,7 @@ fn build_client(work: &Path, name: &str, (include, library): &(PathBuf, PathBuf)
 }
 
 /// Runs a client on a case; its output, or why there is none.
-fn run_client(exe: &Path, dir: &Path, profile: &str) -> Result<String, String> {
+fn run_client(exe: &Path, dir: &Path, profile: &str, limit: Duration) -> Result<String, String> {
     let mut cmd = Command::new(exe);
     cmd.arg("script.txt").current_dir(dir).stdout(Stdio::piped()).stderr(Stdio::null()).env_remove("OPENCRG_COMPAT");
     if profile == "2.0.1" {
@@ -148,10 +149,10 @@ fn run_client(exe: &Path, dir: &Path, profile: &str) -> Result<String, String> {
         if let Some(status) = child.try_wait().map_err(|e| e.to_string())? {
             break status;
         }
-        if start.elapsed() > RUN_LIMIT {
+        if start.elapsed() > limit {
             let _ = child.kill();
             let _ = child.wait();
-            return Err(format!("hung (killed after {} s)", RUN_LIMIT.as_secs()));
+            return Err(format!("hung (killed after {} s)", limit.as_secs()));
         }
         std::thread::sleep(Duration::from_millis(2));
     };
@@ -226,7 +227,8 @@ fn run(args: Args) -> Result<bool, String> {
         let summary = write_case(&dir, args.seed, i).map_err(|e| format!("{}: {e}", dir.display()))?;
         totals.roads += 1;
         let differing_before = totals.differing_roads;
-        match (run_client(&client_a, &dir, &args.profile), run_client(&client_b, &dir, &args.profile)) {
+        let run = |exe: &Path| run_client(exe, &dir, &args.profile, args.timeout);
+        match (run(&client_a), run(&client_b)) {
             (Ok(x), Ok(y)) => compare_case(i, &summary, &x, &y, args.show, &mut totals),
             (x, y) => {
                 let state = |r: &Result<String, String>| r.as_ref().map_or_else(|e| e.clone(), |_| "ran".into());

@@ -171,7 +171,7 @@ fn repeat(frac: f64, max_frac: f64) -> f64 {
 /// sends infinities and NaN through it, and its answers depend on this value.
 #[inline]
 fn c_int(x: f64) -> i32 {
-    if x > -2147483649.0 && x < 2147483648.0 {
+    if x > -2_147_483_649.0 && x < 2_147_483_648.0 {
         x as i32
     } else {
         i32::MIN

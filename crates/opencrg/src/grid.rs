@@ -45,7 +45,8 @@ const V_TABLE_SIZE: usize = 200;
 /// index for negative values, NaN and values out of range.
 fn c_index(x: f64) -> usize {
     let t = x.trunc();
-    if t >= 0.0 && t < 9.223372036854775808e18 {
+    // 2^63: the first value the conversion cannot hold.
+    if (0.0..9_223_372_036_854_775_808.0).contains(&t) {
         t as usize
     } else {
         usize::MAX

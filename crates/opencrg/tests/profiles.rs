@@ -41,7 +41,7 @@ fn heading_of_uv_to_pk() {
     for (compat, offset) in [(Compat::Upstream, 1), (Compat::Release201, 0)] {
         let road = Arc::new(load(&spec, compat));
         let phi = road.reference_line().phi.clone().unwrap();
-        let mut cp = ContactPoint::new(road);
+        let cp = ContactPoint::new(road);
         // u = 10.1 lies in segment 40 (u 10.0 to 10.25).
         let (heading, _) = cp.uv_to_pk(10.1, 0.0).unwrap();
         assert_eq!(heading, phi[40 + offset], "{compat}");
@@ -55,7 +55,7 @@ fn default_reference_point_of_the_relocation() {
         let mut road = load(&spec, compat);
         road.check().unwrap();
         road.apply_modifiers();
-        let mut cp = ContactPoint::new(Arc::new(road));
+        let cp = ContactPoint::new(Arc::new(road));
         let (x, y) = cp.uv_to_xy(0.0, v_at_origin).unwrap();
         assert!(x.abs() < 1e-9 && y.abs() < 1e-9, "{compat}: ({x}, {y})");
         let (heading, _) = cp.uv_to_pk(0.0, 0.0).unwrap();
