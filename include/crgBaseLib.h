@@ -332,36 +332,6 @@
  */
 #define dCrgOrientRev 1
 
-/*
- Message levels of the classic API.
- */
-#define NONE 0
-
-/*
- Fatal errors.
- */
-#define FATAL 1
-
-/*
- Warnings.
- */
-#define WARN 2
-
-/*
- Notices.
- */
-#define NOTICE 3
-
-/*
- Information.
- */
-#define INFO 4
-
-/*
- Debugging.
- */
-#define DEBUG 5
-
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -642,12 +612,6 @@ int crgEvaluv2pk(int cpId, double u, double v, double *phi, double *curv);
 int crgEvalxy2pk(int cpId, double x, double y, double *phi, double *curv);
 
 extern void crgMsgPrint(int level, const char *format, ...);
-
-int opencrg_msg_wanted(int level);
-
-int opencrg_msg_route(int level, char *text);
-
-const char *opencrg_msg_level_name(int level);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -1,19 +1,37 @@
 /*
  * crgMsgPrint is variadic, which stable Rust cannot define. This shim formats the
- * message and hands the text to the Rust side, which either passes it to the
- * application's callback or asks for it to be printed here, on C's stdout, so that
- * it interleaves correctly with the application's own printf output.
+ * message and hands the text to the Rust side (src/msg.rs), which either passes it to
+ * the application's callback or has it printed here, on stderr, with the level's name
+ * in front, as the reference library prints its messages.
+ *
+ * The Rust side installs its two hooks when the library is loaded. The hooks are
+ * hidden symbols, so the library exports exactly the API. Without them (a program
+ * linking the static library and calling nothing but crgMsgPrint) messages up to the
+ * default level NOTICE are printed.
  */
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 
-/* Rust side: is a message of this level wanted at all? */
-int opencrg_msg_wanted(int level);
-/* Rust side: route the text; returns 1 when the shim should print it. */
-int opencrg_msg_route(int level, char *text);
-/* Rust side: the level's display name. */
-const char *opencrg_msg_level_name(int level);
+#define HIDDEN __attribute__((visibility("hidden")))
+
+/* Is a message of this level wanted at all? */
+HIDDEN int (*opencrg_msg_wanted_hook)(int level) = NULL;
+/* Routes the text; returns 1 when the shim should print it. */
+HIDDEN int (*opencrg_msg_route_hook)(int level, char *text) = NULL;
+
+static const char *level_name(int level)
+{
+    switch (level) {
+    case 0: return "NONE";
+    case 1: return "FATAL";
+    case 2: return "WARNING";
+    case 3: return "NOTICE";
+    case 4: return "INFO";
+    case 5: return "DEBUG";
+    default: return "unknown level";
+    }
+}
 
 void crgMsgPrint(int level, const char *format, ...)
 {
@@ -22,7 +40,9 @@ void crgMsgPrint(int level, const char *format, ...)
     va_list ap;
     int n;
 
-    if (!format || !opencrg_msg_wanted(level))
+    if (!format)
+        return;
+    if (opencrg_msg_wanted_hook ? !opencrg_msg_wanted_hook(level) : level > 3)
         return;
     va_start(ap, format);
     n = vsnprintf(small, sizeof small, format, ap);
@@ -38,9 +58,9 @@ void crgMsgPrint(int level, const char *format, ...)
             text = big;
         }
     }
-    if (opencrg_msg_route(level, text)) {
-        printf("%7s: %s", opencrg_msg_level_name(level), text);
-        fflush(stdout);
+    if (!opencrg_msg_route_hook || opencrg_msg_route_hook(level, text)) {
+        fprintf(stderr, "%7s: %s", level_name(level), text);
+        fflush(stderr);
     }
     if (text != small)
         free(text);

@@ -9,6 +9,7 @@ use crate::msg;
 use crate::panic::guard;
 use crate::profile;
 use crate::registry;
+use crate::report;
 use opencrg::settings::{describe, name, Family, Kind, Value};
 use opencrg::{ContactPoint, Road, Settings};
 use std::ffi::{c_char, c_int, c_uint, c_void, CStr};
@@ -106,10 +107,11 @@ pub extern "C" fn crgLoaderReadFile(filename: *const c_char) -> c_int {
             }
         };
         match Road::load_with(&path, compat) {
-            Ok(road) => {
+            Ok(mut road) => {
                 for w in road.warnings() {
                     msg::warn(w);
                 }
+                report::send("crgLoaderReadFile", road.take_events());
                 if let Some(n) = road.header().warn_msgs {
                     msg::set_max_warnings(n);
                 }
@@ -138,20 +140,31 @@ pub extern "C" fn crgLoaderSuppressFileNotFoundFatalMsg(suppress: bool) {
 /// Checks a data set's options, modifiers and (when asked) curvature.
 #[no_mangle]
 pub extern "C" fn crgCheck(dataSetId: c_int) -> c_int {
-    guard("crgCheck", 0, || match on_road_mut("crgCheck", dataSetId, |r| r.check()) {
-        Some(Ok(())) => 1,
-        Some(Err(e)) => {
-            msg::fatal(&format!("crgCheck: {e}"));
-            0
+    guard("crgCheck", 0, || {
+        let Some((checked, events)) = on_road_mut("crgCheck", dataSetId, |r| (r.check(), r.take_events())) else {
+            return 0;
+        };
+        report::send("crgCheck", events);
+        match checked {
+            Ok(()) => 1,
+            Err(e) => {
+                msg::fatal(&format!("crgCheck: {e}"));
+                0
+            }
         }
-        None => 0,
     })
 }
 
 /// Releases a data set and its contact points.
 #[no_mangle]
 pub extern "C" fn crgDataSetRelease(dataSetId: c_int) -> c_int {
-    guard("crgDataSetRelease", 0, || c_int::from(registry::release_dataset(dataSetId)))
+    guard("crgDataSetRelease", 0, || {
+        let released = registry::release_dataset(dataSetId);
+        if released {
+            msg::send(msg::NOTICE, &format!("crgDataSetRelease: data set {dataSetId} released"));
+        }
+        c_int::from(released)
+    })
 }
 
 /// Releases every data set.
@@ -326,7 +339,13 @@ pub extern "C" fn crgDataSetOptionSetDefault(dataSetId: c_int) {
 /// Applies a data set's modifiers to its data.
 #[no_mangle]
 pub extern "C" fn crgDataSetModifiersApply(dataSetId: c_int) {
-    road_write("crgDataSetModifiersApply", dataSetId, (), |r| r.apply_modifiers())
+    guard("crgDataSetModifiersApply", (), || {
+        let events = on_road_mut("crgDataSetModifiersApply", dataSetId, |r| {
+            r.apply_modifiers();
+            r.take_events()
+        });
+        report::send("crgDataSetModifiersApply", events.unwrap_or_default());
+    })
 }
 
 fn print_settings(table: &Settings, label: &str) {

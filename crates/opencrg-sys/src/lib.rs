@@ -12,6 +12,7 @@ mod msg;
 mod panic;
 mod profile;
 mod registry;
+mod report;
 
 pub use api::*;
 

@@ -9,20 +9,18 @@ use std::sync::atomic::{AtomicI32, Ordering};
 use std::sync::Mutex;
 
 /// Message levels of the classic API.
-pub const NONE: c_int = 0;
+pub(crate) const NONE: c_int = 0;
 /// Fatal errors.
-pub const FATAL: c_int = 1;
+pub(crate) const FATAL: c_int = 1;
 /// Warnings.
-pub const WARN: c_int = 2;
+pub(crate) const WARN: c_int = 2;
 /// Notices.
-pub const NOTICE: c_int = 3;
-/// Information.
-pub const INFO: c_int = 4;
+pub(crate) const NOTICE: c_int = 3;
 /// Debugging.
-pub const DEBUG: c_int = 5;
+pub(crate) const DEBUG: c_int = 5;
 
 /// The callback type of `crgMsgSetCallback`.
-pub type Callback = unsafe extern "C" fn(c_int, *mut c_char) -> c_int;
+pub(crate) type Callback = unsafe extern "C" fn(c_int, *mut c_char) -> c_int;
 
 static LEVEL: AtomicI32 = AtomicI32::new(NOTICE);
 static WARN_BUDGET: AtomicI32 = AtomicI32::new(-1);
@@ -74,13 +72,14 @@ pub fn warn(text: &str) {
     send(WARN, text);
 }
 
-#[no_mangle]
-extern "C" fn opencrg_msg_wanted(level: c_int) -> c_int {
+/// Whether a message of this level is wanted at all (the shim formats nothing otherwise).
+extern "C" fn wanted(level: c_int) -> c_int {
     c_int::from(level <= self::level())
 }
 
-#[no_mangle]
-extern "C" fn opencrg_msg_route(level: c_int, text: *mut c_char) -> c_int {
+/// Routes a formatted message: to the application's callback, or (returning 1) back to
+/// the shim to print on stderr while the warning budget lasts.
+extern "C" fn route(level: c_int, text: *mut c_char) -> c_int {
     let cb = *lock(&CALLBACK);
     if let Some(cb) = cb {
         // SAFETY: the application registered this callback for exactly this use;
@@ -98,16 +97,27 @@ extern "C" fn opencrg_msg_route(level: c_int, text: *mut c_char) -> c_int {
     1
 }
 
-#[no_mangle]
-extern "C" fn opencrg_msg_level_name(level: c_int) -> *const c_char {
-    match level {
-        NONE => c"NONE",
-        FATAL => c"FATAL",
-        WARN => c"WARNING",
-        NOTICE => c"NOTICE",
-        INFO => c"INFO",
-        DEBUG => c"DEBUG",
-        _ => c"unknown level",
-    }
-    .as_ptr()
+type WantedHook = Option<extern "C" fn(c_int) -> c_int>;
+type RouteHook = Option<extern "C" fn(c_int, *mut c_char) -> c_int>;
+
+extern "C" {
+    // Hidden symbols of the C shim: how it reaches this module without the library
+    // exporting anything beyond the API.
+    static mut opencrg_msg_wanted_hook: WantedHook;
+    static mut opencrg_msg_route_hook: RouteHook;
 }
+
+/// Hands the shim its two hooks when the library is loaded (before `main`, or before
+/// the loading program's `dlopen` returns).
+extern "C" fn install_hooks() {
+    // SAFETY: runs once, from the loader, before any thread of the program can call
+    // into the library; the statics are plain function pointers in the shim.
+    unsafe {
+        *std::ptr::addr_of_mut!(opencrg_msg_wanted_hook) = Some(wanted);
+        *std::ptr::addr_of_mut!(opencrg_msg_route_hook) = Some(route);
+    }
+}
+
+#[used]
+#[link_section = ".init_array"]
+static INSTALL_HOOKS: extern "C" fn() = install_hooks;

@@ -17,7 +17,12 @@ impl Road {
             return Err(Error::Check("reference line can be closed but the u border mode is 1".into()));
         }
         check_options(&self.options)?;
-        check_modifiers(&mut self.modifiers, self.compat)?;
+        let mut defaulted = Vec::new();
+        let checked = check_modifiers(&mut self.modifiers, self.compat, &mut defaulted);
+        for (id, value) in defaulted {
+            self.note(crate::report::Event::ModifierDefaulted { id, value });
+        }
+        checked?;
         let global = self.options.is_set(opt::WARN_CURV_GLOBAL);
         let local = self.options.is_set(opt::WARN_CURV_LOCAL);
         if (global || local) && !self.curvature_fits_width() {
@@ -107,7 +112,9 @@ fn check_options(o: &Settings) -> Result<()> {
     Ok(())
 }
 
-fn check_modifiers(mods: &mut Settings, compat: Compat) -> Result<()> {
+/// Checks the modifiers and completes the relocation ones with their defaults, noting
+/// in `defaulted` the reference point coordinates it chose.
+fn check_modifiers(mods: &mut Settings, compat: Compat, defaulted: &mut Vec<(u32, f64)>) -> Result<()> {
     for (id, name) in [(m::SCALE_LENGTH, "SCALE_LENGTH"), (m::SCALE_WIDTH, "SCALE_WIDTH")] {
         if let Some(v) = mods.get_double(id) {
             if v <= 0.0 {
@@ -175,7 +182,8 @@ fn check_modifiers(mods: &mut Settings, compat: Compat) -> Result<()> {
                 // reference line's (the releases took the right border).
                 (false, false) => {
                     let default = if what == "v" && compat == Compat::Upstream { abs } else { frac };
-                    mods.set_double(default, 0.0)?
+                    mods.set_double(default, 0.0)?;
+                    defaulted.push((default, 0.0));
                 }
                 _ => {}
             }

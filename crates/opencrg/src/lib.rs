@@ -29,6 +29,7 @@ mod modifiers;
 pub mod reader;
 pub mod records;
 pub mod refline;
+pub mod report;
 mod road;
 pub mod search;
 pub mod settings;

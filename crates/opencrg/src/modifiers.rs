@@ -71,7 +71,8 @@ impl Road {
                 2 => (NanMode::KeepLast, mods.get_double(m::GRID_NAN_OFFSET).unwrap_or(0.0)),
                 _ => (NanMode::Keep, 0.0),
             };
-            self.grid.fill_nans(mode, offset);
+            let found = self.grid.fill_nans(mode, offset);
+            self.note(crate::report::Event::NansHandled(found));
         }
         if prepare {
             self.prepare();
@@ -160,6 +161,11 @@ impl Road {
             ([from_xy.0, from_xy.1, z], center, rot)
         };
 
+        self.note(crate::report::Event::Relocated {
+            center,
+            angle,
+            shift: (target[0] - from[0], target[1] - from[1], target[2] - from[2]),
+        });
         let l = &mut self.line;
         if let Some(phi) = &mut l.phi {
             phi.iter_mut().for_each(|p| *p += angle);

@@ -247,10 +247,10 @@ impl RefLine {
     }
 
     /// Computes the reference line z from the slope channel or the constant start
-    /// slope; nothing to do when neither is given.
-    pub(crate) fn integrate_z(&mut self) {
+    /// slope; nothing to do (and false) when neither is given.
+    pub(crate) fn integrate_z(&mut self) -> bool {
         if self.slope_first == 0.0 && self.slope.is_none() {
-            return;
+            return false;
         }
         let n = self.n;
         let inc = self.u_inc;
@@ -274,6 +274,7 @@ impl RefLine {
             self.z_last = z[n - 1];
         }
         self.z = Some(z);
+        true
     }
 
     /// Updates the cached end headings and finds whether the line can be closed: the

@@ -28,6 +28,8 @@ pub struct Road {
     pub(crate) prefetch: crate::eval::PrefetchHint,
     /// The reference behaviour the road follows.
     pub(crate) compat: Compat,
+    /// Events not yet taken by [`Road::take_events`].
+    pub(crate) events: Vec<crate::report::Event>,
 }
 
 /// Largest road accepted, in grid cells (guards against headers declaring absurd sizes).
@@ -249,7 +251,10 @@ impl Road {
             index: SampleIndex::default(),
             prefetch: Default::default(),
             compat,
+            events: Vec::new(),
         };
+        let imported: Vec<_> = road.header.references.clone();
+        road.events.extend(imported.into_iter().map(crate::report::Event::FileImported));
         road.prepare();
         Ok(road)
     }
@@ -258,10 +263,19 @@ impl Road {
     /// closed-track data, and the search index. Runs after loading and after
     /// modifiers that change the data.
     pub(crate) fn prepare(&mut self) {
+        use crate::report::Event;
+        if self.line.phi.is_some() {
+            self.note(Event::LineFromHeading);
+        }
         self.line.integrate_xy(self.compat);
-        self.line.integrate_z();
+        if self.line.integrate_z() {
+            self.note(Event::LineZFromSlope);
+        }
         self.grid.fold_mean();
+        let statistics = self.statistics();
+        self.note(Event::Prepared(Box::new(statistics)));
         self.line.update_utility();
+        self.note(Event::ClosedTrack(self.line.closed));
         self.grid.build_v_table();
         self.line.update_caches();
         self.index = SampleIndex::build(&self.line);

@@ -1,0 +1,83 @@
+//! The messages that tell what the library did: the core's events (files imported,
+//! how the reference line was built, the statistics block, closed-track data, defaults
+//! completed, NaN handling: NOTICE; the relocation: DEBUG) in words, at the levels the
+//! reference uses.
+
+use crate::msg::{self, DEBUG, NOTICE};
+use opencrg::report::{Event, Statistics};
+
+/// Sends one message per event (and per line of the statistics block), in order.
+/// Call it with no contact point or data set held: a callback may call back.
+pub(crate) fn send(func: &str, events: Vec<Event>) {
+    for event in events {
+        match event {
+            Event::FileImported(path) => {
+                msg::send(NOTICE, &format!("{func}: read the file referenced as <{}>", path.display()))
+            }
+            Event::LineFromHeading => msg::send(NOTICE, &format!("{func}: reference line x/y integrated from the heading channel")),
+            Event::LineZFromSlope => msg::send(NOTICE, &format!("{func}: reference line z integrated from the slope")),
+            Event::Prepared(s) => statistics(func, &s),
+            Event::ClosedTrack(Some((a, b))) => {
+                msg::send(NOTICE, &format!("{func}: the reference line can be closed, over u = {a:.3} .. {b:.3}"))
+            }
+            Event::ClosedTrack(None) => msg::send(NOTICE, &format!("{func}: the reference line cannot be closed")),
+            Event::ModifierDefaulted { id, value } => msg::send(
+                NOTICE,
+                &format!("{func}: {} not given, set to its default {value:.1}", opencrg::settings::name(id)),
+            ),
+            Event::NansHandled(0) => msg::send(NOTICE, &format!("{func}: no NaN in the elevation grid")),
+            Event::NansHandled(n) => msg::send(NOTICE, &format!("{func}: {n} NaN cells at the grid borders handled")),
+            Event::Relocated { center, angle, shift } => msg::send(
+                DEBUG,
+                &format!(
+                    "{func}: road moved: rotated by {angle:.6} rad around ({:.3}, {:.3}), shifted by ({:.3}, {:.3}, {:.3})",
+                    center.0, center.1, shift.0, shift.1, shift.2
+                ),
+            ),
+        }
+    }
+}
+
+/// The statistics block: the reference's figures in its order, one line a message.
+fn statistics(func: &str, s: &Statistics) {
+    if NOTICE > msg::level() {
+        return;
+    }
+    let mut lines = vec![
+        String::new(),
+        format!("{func}: road statistics"),
+        "    elevation of the grid".to_string(),
+        format!("        mean at the start     [m]: {:10.4}", s.z_mean_start),
+        format!("        mean at the end       [m]: {:10.4}", s.z_mean_end),
+        format!("        lowest                [m]: {:10.4}", s.z_min),
+        format!("        highest               [m]: {:10.4}", s.z_max),
+        "    reference line".to_string(),
+        format!("        first u               [m]: {:10.4}", s.u_first),
+        format!("        last u                [m]: {:10.4}", s.u_last),
+        format!("        start x               [m]: {:10.4}", s.start.0),
+        format!("        start y               [m]: {:10.4}", s.start.1),
+        format!("        start heading       [rad]: {:10.4}", s.start.2),
+        format!("        end x                 [m]: {:10.4}", s.end.0),
+        format!("        end y                 [m]: {:10.4}", s.end.1),
+        format!("        end heading         [rad]: {:10.4}", s.end.2),
+        "    v range".to_string(),
+        format!("        right border v        [m]: {:10.4}", s.v_first),
+        format!("        left border v         [m]: {:10.4}", s.v_last),
+        "    curvature of the reference line".to_string(),
+        format!("        tightest right      [1/m]: {:10.4}", s.curvature_right),
+        format!("        tightest left       [1/m]: {:10.4}", s.curvature_left),
+    ];
+    if let Some((first, last)) = s.banking {
+        lines.push("    banking".to_string());
+        lines.push(format!("        at the start        [m/m]: {first:10.4}"));
+        lines.push(format!("        at the end          [m/m]: {last:10.4}"));
+    }
+    lines.push("    elevation of the reference line".to_string());
+    lines.push(format!("        at the start          [m]: {:10.4}", s.z_line.0));
+    lines.push(format!("        at the end            [m]: {:10.4}", s.z_line.1));
+    lines.push(format!("{func}: end of road statistics"));
+    lines.push(String::new());
+    for line in lines {
+        msg::send(NOTICE, &line);
+    }
+}
