@@ -1,5 +1,5 @@
 /* Every exported function of the classic API, including bad ids, null pointers
- * and missing files. usage: test_api ROAD.crg TMPDIR */
+ * and missing files. usage: test_api ROAD.crg TMPDIR [VERSION] */
 #include <stdlib.h>
 #include <string.h>
 #include "crgBaseLib.h"
@@ -65,6 +65,9 @@ int main(int argc, char **argv)
     CHECK(crgMsgIsPrintable(dCrgMsgLevelFatal) == 1);
     crgMsgSetMaxLogMsgs(10);
     CHECK(strlen(crgGetReleaseInfo()) > 0);
+    /* The version comes from one place (Cargo.toml); CMake passes it here. */
+    if (argc > 3)
+        CHECK(strstr(crgGetReleaseInfo(), argv[3]) != NULL);
 
     /* allocator hooks */
     crgCallocSetCallback(my_calloc);

@@ -437,17 +437,20 @@ void crgDataSetModifiersApply(int dataSetId);
 void crgDataSetModifiersPrint(int dataSetId);
 
 /*
- Prints the header values of a data set.
+ Prints the header values of a data set, one message a value (the reference's
+ figures in its order).
  */
 void crgDataPrintHeader(int dataSetId);
 
 /*
- Prints the channels of a data set.
+ Prints the channels of a data set: the long sections' positions and columns, then
+ the reference line channels' columns (sizes at the DEBUG level).
  */
 void crgDataPrintChannelInfo(int dataSetId);
 
 /*
- Prints a summary of the road.
+ Prints a summary of the road: length, increment, cross sections, width and its
+ parts, every long section's position, their number.
  */
 void crgDataPrintRoadInfo(int dataSetId);
 

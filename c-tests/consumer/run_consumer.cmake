@@ -1,6 +1,7 @@
-# Installs the library into a fresh prefix, builds the consumer project against it
-# with find_package (shared and static), with pkg-config, and with -lOpenCRG, and
-# runs each program.
+# Configures the library with the default prefix, installs it elsewhere with
+# `cmake --install --prefix` (as the README says), then builds the consumer project
+# against that tree with find_package (shared and static), with pkg-config, and with
+# -lOpenCRG, and runs each program.
 file(REMOVE_RECURSE "${WORK_DIR}")
 set(prefix "${WORK_DIR}/prefix")
 function(run)
@@ -9,9 +10,14 @@ function(run)
         message(FATAL_ERROR "failed (${rc}): ${ARGN}")
     endif()
 endfunction()
-run("${CMAKE_COMMAND}" -S "${SOURCE_DIR}" -B "${WORK_DIR}/lib-build" -DBUILD_TESTING=OFF -DCMAKE_INSTALL_PREFIX=${prefix})
+run("${CMAKE_COMMAND}" -S "${SOURCE_DIR}" -B "${WORK_DIR}/lib-build" -DBUILD_TESTING=OFF)
 run("${CMAKE_COMMAND}" --build "${WORK_DIR}/lib-build")
-run("${CMAKE_COMMAND}" --install "${WORK_DIR}/lib-build")
+run("${CMAKE_COMMAND}" --install "${WORK_DIR}/lib-build" --prefix "${prefix}")
+foreach(f lib/libopencrg.so.${VERSION} lib/libopencrg.so.2 lib/libopencrg.so lib/libOpenCRG.so lib/libopencrg.a include/crgBaseLib.h)
+    if(NOT EXISTS "${prefix}/${f}")
+        message(FATAL_ERROR "not installed: ${prefix}/${f}")
+    endif()
+endforeach()
 run("${CMAKE_COMMAND}" -S "${SOURCE_DIR}/c-tests/consumer" -B "${WORK_DIR}/consumer-build" -DCMAKE_PREFIX_PATH=${prefix})
 run("${CMAKE_COMMAND}" --build "${WORK_DIR}/consumer-build")
 run("${WORK_DIR}/consumer-build/consumer_shared" "${ROAD}")
@@ -25,10 +31,20 @@ if(PKG_CONFIG)
         message(FATAL_ERROR "pkg-config does not know opencrg")
     endif()
     separate_arguments(flags UNIX_COMMAND "${flags}")
+    # The paths pkg-config gives (relative to the .pc file) lead into the install prefix.
+    foreach(flag IN LISTS flags)
+        if(flag MATCHES "^-[IL](.*)")
+            get_filename_component(dir "${CMAKE_MATCH_1}" REALPATH)
+            get_filename_component(real_prefix "${prefix}" REALPATH)
+            if(NOT dir STREQUAL "${real_prefix}/include" AND NOT dir STREQUAL "${real_prefix}/lib")
+                message(FATAL_ERROR "pkg-config gives a path outside the install prefix ${prefix}: ${flag}")
+            endif()
+        endif()
+    endforeach()
     run(cc "${SOURCE_DIR}/c-tests/consumer/main.c" ${flags} -lm -Wl,-rpath,${prefix}/lib -o "${WORK_DIR}/consumer_pkgconfig")
     run("${WORK_DIR}/consumer_pkgconfig" "${ROAD}")
 endif()
 run(cc "${SOURCE_DIR}/c-tests/consumer/main.c" -I${prefix}/include -L${prefix}/lib -lOpenCRG -lm -Wl,-rpath,${prefix}/lib
     -o "${WORK_DIR}/consumer_lOpenCRG")
 run("${WORK_DIR}/consumer_lOpenCRG" "${ROAD}")
-message(STATUS "consumer: find_package (shared, static), pkg-config and -lOpenCRG all built and ran")
+message(STATUS "consumer: installed with --prefix; find_package (shared, static), pkg-config and -lOpenCRG all built and ran")

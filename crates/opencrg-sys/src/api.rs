@@ -108,13 +108,15 @@ pub extern "C" fn crgLoaderReadFile(filename: *const c_char) -> c_int {
         };
         match Road::load_with(&path, compat) {
             Ok(mut road) => {
+                // The file's WARN_MSGS counts the messages of its own loading, as the
+                // reference applies it while reading the header.
+                if let Some(n) = road.header().warn_msgs {
+                    msg::set_max_warnings(n);
+                }
                 for w in road.warnings() {
                     msg::warn(w);
                 }
                 report::send("crgLoaderReadFile", road.take_events());
-                if let Some(n) = road.header().warn_msgs {
-                    msg::set_max_warnings(n);
-                }
                 let id = registry::add_dataset(road);
                 msg::send(msg::NOTICE, &format!("crgLoaderReadFile: finished reading file <{}>", path.display()));
                 id
@@ -180,7 +182,8 @@ pub extern "C" fn crgMemRelease() {
 /// The library's release text.
 #[no_mangle]
 pub extern "C" fn crgGetReleaseInfo() -> *const c_char {
-    c"OpenCRG Rust library 2.0.1 (classic C API 2.0.1 compatible)".as_ptr()
+    const INFO: &str = concat!("OpenCRG Rust library ", env!("CARGO_PKG_VERSION"), " (classic C API)\0");
+    INFO.as_ptr().cast()
 }
 
 // ---------------------------------------------------------------- data set queries
@@ -349,7 +352,7 @@ pub extern "C" fn crgDataSetModifiersApply(dataSetId: c_int) {
 }
 
 fn print_settings(table: &Settings, label: &str) {
-    msg::send(msg::NOTICE, &format!("crgOptionsPrint: available {label}s:"));
+    msg::send(msg::NOTICE, &format!("crgOptionsPrint: {label}s set:"));
     let mut any = false;
     for (id, v) in table.iter() {
         any = true;
@@ -357,11 +360,13 @@ fn print_settings(table: &Settings, label: &str) {
             Value::Int(i) => i.to_string(),
             Value::Double(d) => format!("{d:.4}"),
         };
-        msg::send(msg::NOTICE, &format!("    {label:>8} = \"{}\"\n       value = {value}", name(id)));
+        msg::send(msg::NOTICE, &format!("    {label:>8} = \"{}\"", name(id)));
+        msg::send(msg::NOTICE, &format!("       value = {value}"));
     }
     if !any {
-        msg::send(msg::NOTICE, &format!("    {label}s disabled or none set"));
+        msg::send(msg::NOTICE, &format!("    no {label}s set"));
     }
+    msg::send(msg::NOTICE, "");
 }
 
 /// Prints a data set's modifiers.
@@ -372,74 +377,104 @@ pub extern "C" fn crgDataSetModifiersPrint(dataSetId: c_int) {
 
 // ---------------------------------------------------------------- printing
 
-/// Prints the header values of a data set.
+/// Prints the header values of a data set, one message a value (the reference's
+/// figures in its order).
 #[no_mangle]
 pub extern "C" fn crgDataPrintHeader(dataSetId: c_int) {
     road_read("crgDataPrintHeader", dataSetId, (), |r| {
         let l = r.reference_line();
         let g = r.grid();
-        let mut text =
-            format!("crgDataPrintHeader: file <{}>, format {}\n", r.header().path.display(), r.format().name());
         for (k, v) in [
-            ("uMin", l.u_first),
-            ("xBegin", l.x_first),
-            ("yBegin", l.y_first),
-            ("phiBegin", l.phi_first),
-            ("uMax", l.u_last),
-            ("xEnd", l.x_last),
-            ("yEnd", l.y_last),
-            ("phiEnd", l.phi_last),
-            ("uInc", l.u_inc),
-            ("vMin", g.v_first),
-            ("vMax", g.v_last),
-            ("vInc", g.v_inc),
+            ("first u", l.u_first),
+            ("start x", l.x_first),
+            ("start y", l.y_first),
+            ("start heading", l.phi_first),
+            ("last u", l.u_last),
+            ("end x", l.x_last),
+            ("end y", l.y_last),
+            ("end heading", l.phi_last),
+            ("u increment", l.u_inc),
+            ("right v", g.v_first),
+            ("left v", g.v_last),
+            ("v increment", g.v_inc),
         ] {
-            text.push_str(&format!("crgDataPrintHeader: {k:<8} = {v:10.4}\n"));
+            msg::send(msg::NOTICE, &format!("crgDataPrintHeader: {k:<13} = {v:10.4}"));
         }
-        for (k, v) in &r.header().road.extra {
-            text.push_str(&format!("crgDataPrintHeader: {k} = {v}\n"));
-        }
-        msg::send(msg::NOTICE, text.trim_end());
     })
 }
 
-/// Prints the channels of a data set.
+/// Prints the channels of a data set: the long sections' positions and columns, then
+/// the reference line channels' columns (sizes at the DEBUG level).
 #[no_mangle]
 pub extern "C" fn crgDataPrintChannelInfo(dataSetId: c_int) {
     road_read("crgDataPrintChannelInfo", dataSetId, (), |r| {
+        use opencrg::header::Channel;
         let h = r.header();
-        let mut text =
-            format!("crgDataPrintChannelInfo: {} channels in format {}\n", h.channels.len(), h.format.name());
-        for (i, c) in h.channels.iter().enumerate() {
-            text.push_str(&format!("    channel {:4}: {c:?}\n", i + 1));
-        }
         let g = r.grid();
-        text.push_str(&format!("    {} long sections, {} cross sections", g.nv, g.nu));
-        msg::send(msg::NOTICE, &text);
+        let send = |level, text: String| msg::send(level, &text);
+        send(msg::NOTICE, "crgDataPrintChannelInfo: the channels of the data set".into());
+        send(msg::NOTICE, format!("    channels in a record     = {:4}", h.channels.len()));
+        send(msg::NOTICE, format!("    long sections            = {:4}", g.nv));
+        for (i, v) in g.v.iter().enumerate() {
+            send(msg::NOTICE, format!("    long section {i:4} at v    = {v:.4}"));
+        }
+        // Columns of the long sections, in the road's (sorted) order.
+        let mut columns: Vec<(f64, usize)> = h
+            .channels
+            .iter()
+            .enumerate()
+            .filter_map(|(col, c)| match *c {
+                Channel::SectionAt(v) | Channel::SectionIndex(v) => Some((v, col)),
+                _ => None,
+            })
+            .collect();
+        columns.sort_by(|a, b| a.0.total_cmp(&b.0));
+        send(msg::NOTICE, format!("    elevation channels       = {:4}", g.nv));
+        for (i, (_, col)) in columns.iter().enumerate() {
+            send(msg::NOTICE, format!("    elevation {i:4} in column = {col:4}"));
+            send(msg::DEBUG, format!("    elevation {i:4} values    = {:4}", g.nu));
+        }
+        send(msg::NOTICE, "reference line channels:".into());
+        let column = |wanted: Channel| h.channels.iter().position(|c| *c == wanted);
+        for (label, channel, computed) in [
+            ("x", Channel::RefX, true),
+            ("y", Channel::RefY, true),
+            ("u", Channel::RefU, false),
+            ("heading", Channel::RefPhi, false),
+            ("slope", Channel::RefSlope, false),
+            ("banking", Channel::RefBank, false),
+        ] {
+            let col = column(channel);
+            if let Some(col) = col {
+                send(msg::NOTICE, format!("    {label:<8} in column      = {col}"));
+            }
+            if computed || col.is_some() {
+                send(msg::DEBUG, format!("    {label:<8} values         = {}", g.nu));
+            }
+        }
+        send(msg::NOTICE, "crgDataPrintChannelInfo: end of the channels".into());
     })
 }
 
-/// Prints a summary of the road.
+/// Prints a summary of the road: length, increment, cross sections, width and its
+/// parts, every long section's position, their number.
 #[no_mangle]
 pub extern "C" fn crgDataPrintRoadInfo(dataSetId: c_int) {
     road_read("crgDataPrintRoadInfo", dataSetId, (), |r| {
         let (u0, u1) = r.u_range();
-        let (v0, v1) = r.v_range();
         let g = r.grid();
-        let mut text = format!(
-            "crgDataPrintRoadInfo: Summary of crg basic information\n    length of road [m]:          {:10.4}\n    cross section increment [m]: {:10.4}\n    number of cross sections:    {}\n    width of road [m]:           {:10.4}\n    width right of refline [m]:  {:10.4}\n    width left of refline [m]:   {:10.4}\n    number of v channels:        {}",
-            u1 - u0,
-            r.increments().0,
-            g.nu,
-            v1 - v0,
-            v0.min(0.0),
-            v1.max(0.0),
-            g.nv
-        );
-        if let Some((a, b)) = r.closed_track() {
-            text.push_str(&format!("\n    reference line can be closed over u = {a:.4} .. {b:.4}"));
+        let line = |text: String| msg::send(msg::NOTICE, &text);
+        line("crgDataPrintRoadInfo: the road in figures".into());
+        line(format!("        length [m]:                       {:10.4}", u1 - u0));
+        line(format!("        distance of cross sections [m]:   {:10.4}", r.increments().0));
+        line(format!("        cross sections:                   {:7}", g.nu));
+        line(format!("        width [m]:                        {:10.4}", g.v_last - g.v_first));
+        line(format!("        right of the reference line [m]:  {:10.4}", g.v_first.min(0.0)));
+        line(format!("        left of the reference line [m]:   {:10.4}", g.v_last.max(0.0)));
+        for v in &g.v {
+            line(format!("        long section at v [m]:            {v:10.4}"));
         }
-        msg::send(msg::NOTICE, &text);
+        line(format!("        long sections:                    {:7}", g.nv));
     })
 }
 

@@ -3,7 +3,7 @@
 //! [`Road::load`] reads a `.crg` file in any of the four formats (LRFI, LDFI, KRBI,
 //! KDBI), following `$ROAD_CRG_FILE` references; [`ContactPoint`] evaluates it:
 //! x/y from u/v, u/v from x/y, elevation, heading and curvature, with the options of
-//! the classic OpenCRG C API. [`write`] saves a road in any format.
+//! the classic OpenCRG C API. [`write()`] saves a road in any format.
 //!
 //! ```no_run
 //! use std::sync::Arc;
@@ -43,3 +43,8 @@ pub use header::DataFormat;
 pub use road::Road;
 pub use settings::{Settings, Value};
 pub use writer::write;
+
+/// The README's Rust code, compiled by `cargo test` as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../../../README.md")]
+pub struct ReadmeDoctests;

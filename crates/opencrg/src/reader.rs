@@ -407,7 +407,15 @@ impl Loader {
                 section = Section::None;
                 match tag {
                     Tag::Data => return Ok(Some(line.end)),
-                    Tag::End => {}
+                    Tag::End => {
+                        if let Some(word) = unknown_section_word(&text) {
+                            self.header.warnings.push(format!(
+                                "{}:{}: unknown section keyword '{word}': the lines up to the next section are ignored",
+                                path.display(),
+                                line.number
+                            ));
+                        }
+                    }
                     Tag::Start(s) => {
                         section = s;
                         self.start_section(s, level);
@@ -481,6 +489,12 @@ impl Loader {
             return Ok(());
         }
         match lookup(&ROAD_KEYS, &key) {
+            None if !WGS84_KEYS.contains(&key.as_str()) => {
+                self.header
+                    .warnings
+                    .push(format!("{}:{number}: $ROAD_CRG: unknown keyword '{field}' ignored", path.display()));
+                self.header.road.extra.push((field, v));
+            }
             Some((_, k)) => {
                 *self.header.road.slot(k) = Some(v);
                 if level == 0 {
@@ -569,6 +583,26 @@ impl Loader {
         }
         Ok(())
     }
+}
+
+/// Keys of `$ROAD_CRG` that are kept (and written back) but not used.
+const WGS84_KEYS: [&str; 6] = [
+    "reference_line_start_lon",
+    "reference_line_start_lat",
+    "reference_line_start_alt",
+    "reference_line_end_lon",
+    "reference_line_end_lat",
+    "reference_line_end_alt",
+];
+
+/// The word of a `$WORD` line that names no section (a typo such as `$ROAD_CGR`); a
+/// plain `$` or `$!` comment line ends a section and names nothing.
+fn unknown_section_word(line: &str) -> Option<&str> {
+    let rest = line.trim_start_matches(' ').strip_prefix('$')?;
+    if !rest.starts_with(|c: char| c.is_ascii_alphabetic()) {
+        return None;
+    }
+    rest.split(|c: char| c.is_whitespace() || c == '!').next()
 }
 
 /// Whether a line starts with `$` and a variable name (letters, digits, `_`).

@@ -225,6 +225,17 @@ impl Road {
         // NaN as the first value, which the integration never reads); elsewhere it makes the
         // elevations around it NaN, which deserves a warning.
         let mut channel_warnings = Vec::new();
+        if let (true, Some(end)) = (format.is_text(), p.end_u) {
+            let declared = ((end - u_first) / u_inc + 0.5).floor() + 1.0;
+            if (nu as f64) < declared {
+                channel_warnings.push(format!(
+                    "{}: data section: {nu} records where REFERENCE_LINE_END_U = {end} declares {declared}; \
+                     the road ends at u = {}",
+                    path.display(),
+                    u_first + (nu - 1) as f64 * u_inc
+                ));
+            }
+        }
         for (values, col, name) in [(&b.slope, cols.slope, "slope"), (&b.bank, cols.bank, "banking")] {
             if let Some(i) = values.iter().skip(1).position(|v| v.is_nan()) {
                 channel_warnings.push(format!(
