@@ -137,9 +137,22 @@ pub fn write_to(road: &Road, out: &mut impl Write, format: DataFormat) -> io::Re
             writeln!(out, "{name:<25}= {}", value_text(v))?;
         }
     }
+    if !road.header.mpro.is_empty() {
+        writeln!(out, "$!**********************************************************************")?;
+        writeln!(out, "$ROAD_CRG_MPRO")?;
+        for (k, v) in &road.header.mpro {
+            writeln!(out, "{k:<25}= {v}")?;
+        }
+    }
     writeln!(out, "$!**********************************************************************")?;
     writeln!(out, "$KD_Definition")?;
     writeln!(out, "#:{}", format.name())?;
+    // A line given by points is written as points; otherwise by its heading.
+    let by_points = road.header.channels.contains(&crate::header::Channel::RefX);
+    if by_points {
+        writeln!(out, "D:reference line x,m")?;
+        writeln!(out, "D:reference line y,m")?;
+    }
     if l.phi.is_some() {
         writeln!(out, "D:reference line phi,rad")?;
     }
@@ -164,6 +177,10 @@ pub fn write_to(road: &Road, out: &mut impl Write, format: DataFormat) -> io::Re
     let mut bytes_written = 0usize;
     for iu in 0..g.nu {
         row.clear();
+        if by_points {
+            row.push(l.x[iu]);
+            row.push(l.y[iu]);
+        }
         for ch in [&l.phi, &l.slope, &l.bank].into_iter().flatten() {
             row.push(ch[iu]);
         }

@@ -1,0 +1,332 @@
+//! `opencrg`: look into, check, convert, evaluate and render OpenCRG road files.
+//!
+//! ```text
+//! opencrg info ROAD [--json]
+//! opencrg check ROAD
+//! opencrg convert IN OUT --format KRBI|KDBI|LRFI|LDFI
+//! opencrg eval ROAD [--xy] [options] < points
+//! opencrg render ROAD OUT.png [--size PX] [--profile u=U|v=V]
+//! ```
+//!
+//! Bad input gives one line on stderr and exit status 2; a road that fails its checks
+//! gives exit status 1 from `check`.
+
+mod canvas;
+mod info;
+mod render;
+
+use clap::{Parser, Subcommand, ValueEnum};
+use opencrg::settings::opt;
+use opencrg::{ContactPoint, DataFormat, Road};
+use std::io::{BufRead, Write};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::sync::Arc;
+
+#[derive(Parser)]
+#[command(name = "opencrg", version, about = "Look into, check, convert, evaluate and render OpenCRG road files")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// What the file holds: format, channels, size, u/v ranges, reference line, elevation range, settings.
+    Info {
+        /// The road file.
+        road: PathBuf,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// The library's checks (options, modifiers, curvature against width): exit status 0 or 1.
+    Check {
+        /// The road file.
+        road: PathBuf,
+    },
+    /// Write the road in another data format, header sections kept.
+    Convert {
+        /// The road file to read.
+        input: PathBuf,
+        /// The file to write.
+        output: PathBuf,
+        /// The data format of the output.
+        #[arg(long, value_enum)]
+        format: Format,
+    },
+    /// Read `u v` lines (or `x y` with --xy) from stdin, print CSV with z, x/y or u/v, heading and curvature.
+    Eval {
+        /// The road file.
+        road: PathBuf,
+        /// The input lines hold x y instead of u v.
+        #[arg(long)]
+        xy: bool,
+        #[command(flatten)]
+        options: EvalOptions,
+    },
+    /// A picture of the road: a top view coloured by elevation, or a section as a line plot.
+    Render {
+        /// The road file.
+        road: PathBuf,
+        /// The PNG file to write.
+        output: PathBuf,
+        /// Pixels on the longer side of the map.
+        #[arg(long, default_value_t = 1200)]
+        size: usize,
+        /// Draw a section instead: `u=12.5` across the road, `v=0.5` along it.
+        #[arg(long)]
+        profile: Option<String>,
+        #[command(flatten)]
+        options: EvalOptions,
+    },
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum Format {
+    Krbi,
+    Kdbi,
+    Lrfi,
+    Ldfi,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum BorderMode {
+    None,
+    Zero,
+    Keep,
+    Repeat,
+    Reflect,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum CurvMode {
+    Lateral,
+    Refline,
+}
+
+/// Evaluation options, as the contact point options of the C API.
+#[derive(clap::Args)]
+struct EvalOptions {
+    /// Border mode beyond the ends of the road.
+    #[arg(long, value_enum)]
+    border_mode_u: Option<BorderMode>,
+    /// Border mode beyond the sides of the road.
+    #[arg(long, value_enum)]
+    border_mode_v: Option<BorderMode>,
+    /// z offset beyond the ends.
+    #[arg(long)]
+    border_offset_u: Option<f64>,
+    /// z offset beyond the sides.
+    #[arg(long)]
+    border_offset_v: Option<f64>,
+    /// Length of the smoothing zone at the start [m].
+    #[arg(long)]
+    smooth_begin: Option<f64>,
+    /// Length of the smoothing zone at the end [m].
+    #[arg(long)]
+    smooth_end: Option<f64>,
+    /// Curvature of the reference line, or of the parallel at v (lateral, the default).
+    #[arg(long, value_enum)]
+    curv_mode: Option<CurvMode>,
+    /// Continue a closed reference line around the track.
+    #[arg(long)]
+    close_track: bool,
+    /// Evaluate the road as read, without crgCheck and the file's modifiers.
+    #[arg(long)]
+    raw: bool,
+}
+
+/// An error for the user: one line.
+type Failure = String;
+
+fn load(path: &Path) -> Result<Road, Failure> {
+    let road = Road::load(path).map_err(|e| e.to_string())?;
+    for w in road.warnings() {
+        eprintln!("opencrg: warning: {w}");
+    }
+    Ok(road)
+}
+
+/// The road prepared as the classic C API prepares it (check, modifiers), and a
+/// contact point with the options asked for.
+fn contact_point(path: &Path, o: &EvalOptions) -> Result<ContactPoint, Failure> {
+    let mut road = load(path)?;
+    if !o.raw {
+        if let Err(e) = road.check() {
+            eprintln!("opencrg: warning: {}: {e}", path.display());
+        }
+        road.apply_modifiers();
+    }
+    let mut cp = ContactPoint::new(Arc::new(road));
+    let mode = |m: BorderMode| match m {
+        BorderMode::None => 0,
+        BorderMode::Zero => 1,
+        BorderMode::Keep => 2,
+        BorderMode::Repeat => 3,
+        BorderMode::Reflect => 4,
+    };
+    let e = |r: opencrg::Result<()>| r.map_err(|e| e.to_string());
+    if let Some(m) = o.border_mode_u {
+        e(cp.set_option_int(opt::BORDER_MODE_U, mode(m)))?;
+    }
+    if let Some(m) = o.border_mode_v {
+        e(cp.set_option_int(opt::BORDER_MODE_V, mode(m)))?;
+    }
+    for (id, value) in [
+        (opt::BORDER_OFFSET_U, o.border_offset_u),
+        (opt::BORDER_OFFSET_V, o.border_offset_v),
+        (opt::SMOOTH_U_BEGIN, o.smooth_begin),
+        (opt::SMOOTH_U_END, o.smooth_end),
+    ] {
+        if let Some(v) = value {
+            e(cp.set_option_double(id, v))?;
+        }
+    }
+    if let Some(c) = o.curv_mode {
+        e(cp.set_option_int(opt::CURV_MODE, matches!(c, CurvMode::Refline) as i32))?;
+    }
+    if o.close_track {
+        e(cp.set_option_int(opt::REFLINE_CONTINUE, 1))?;
+    }
+    Ok(cp)
+}
+
+fn number(v: Option<f64>) -> String {
+    match v {
+        Some(x) if !x.is_nan() => format!("{x}"),
+        _ => "nan".into(),
+    }
+}
+
+/// Reads point lines from stdin and writes the CSV.
+fn eval(cp: &mut ContactPoint, xy: bool) -> Result<(), Failure> {
+    let stdin = std::io::stdin();
+    let stdout = std::io::stdout();
+    let mut out = std::io::BufWriter::new(stdout.lock());
+    let io = |e: std::io::Error| format!("stdout: {e}");
+    writeln!(out, "{}", if xy { "x,y,u,v,z,phi,curv" } else { "u,v,x,y,z,phi,curv" }).map_err(io)?;
+    for (k, line) in stdin.lock().lines().enumerate() {
+        let line = line.map_err(|e| format!("stdin: {e}"))?;
+        let text = line.trim();
+        if text.is_empty() || text.starts_with('#') {
+            continue;
+        }
+        let values: Vec<f64> = text
+            .split(|c: char| c.is_whitespace() || c == ',')
+            .filter(|s| !s.is_empty())
+            .map(|s| s.parse::<f64>())
+            .collect::<Result<_, _>>()
+            .map_err(|_| format!("stdin:{}: '{text}' is not two numbers", k + 1))?;
+        let [a, b] = values[..] else {
+            return Err(format!("stdin:{}: '{text}' is not two numbers", k + 1));
+        };
+        let (u, v, x, y) = if xy {
+            let (u, v) = cp.xy_to_uv(a, b).map_or((None, None), |(u, v)| (Some(u), Some(v)));
+            (u, v, Some(a), Some(b))
+        } else {
+            let (x, y) = cp.uv_to_xy(a, b).map_or((None, None), |(x, y)| (Some(x), Some(y)));
+            (Some(a), Some(b), x, y)
+        };
+        let (z, pk) = if xy {
+            (cp.xy_to_z(a, b).ok(), cp.xy_to_pk(a, b).ok())
+        } else {
+            (cp.uv_to_z(a, b).ok(), cp.uv_to_pk(a, b).ok())
+        };
+        let fields = if xy { [x, y, u, v] } else { [u, v, x, y] };
+        let row: Vec<String> = fields.into_iter().chain([z, pk.map(|p| p.0), pk.map(|p| p.1)]).map(number).collect();
+        writeln!(out, "{}", row.join(",")).map_err(io)?;
+    }
+    out.flush().map_err(io)
+}
+
+fn parse_profile(text: &str) -> Result<render::Section, Failure> {
+    let bad = || format!("--profile '{text}': expected u=NUMBER or v=NUMBER");
+    let (axis, value) = text.split_once('=').ok_or_else(bad)?;
+    let value: f64 = value.trim().parse().map_err(|_| bad())?;
+    match axis.trim() {
+        "u" => Ok(render::Section::AtU(value)),
+        "v" => Ok(render::Section::AtV(value)),
+        _ => Err(bad()),
+    }
+}
+
+fn run(cli: Cli) -> Result<ExitCode, Failure> {
+    match cli.command {
+        Command::Info { road, json } => {
+            let r = load(&road)?;
+            let name = road.display().to_string();
+            if json {
+                println!("{}", serde_json::to_string_pretty(&info::facts(&r, &name)).map_err(|e| e.to_string())?);
+            } else {
+                print!("{}", info::text(&r, &name));
+            }
+        }
+        Command::Check { road } => {
+            let mut r = load(&road)?;
+            return Ok(match r.check() {
+                Ok(()) => {
+                    println!("{}: passes the checks", road.display());
+                    ExitCode::SUCCESS
+                }
+                Err(e) => {
+                    eprintln!("{}: {e}", road.display());
+                    ExitCode::from(1)
+                }
+            });
+        }
+        Command::Convert { input, output, format } => {
+            let r = load(&input)?;
+            let f = match format {
+                Format::Krbi => DataFormat::Krbi,
+                Format::Kdbi => DataFormat::Kdbi,
+                Format::Lrfi => DataFormat::Lrfi,
+                Format::Ldfi => DataFormat::Ldfi,
+            };
+            opencrg::write(&r, &output, f).map_err(|e| e.to_string())?;
+        }
+        Command::Eval { road, xy, options } => {
+            let mut cp = contact_point(&road, &options)?;
+            eval(&mut cp, xy)?;
+        }
+        Command::Render { road, output, size, profile, options } => {
+            let section = profile.as_deref().map(parse_profile).transpose()?;
+            let mut cp = contact_point(&road, &options)?;
+            let picture = match section {
+                Some(s) => render::profile(&mut cp, s),
+                None => {
+                    let bar = indicatif::ProgressBar::new(0);
+                    bar.set_style(
+                        indicatif::ProgressStyle::with_template("rendering {bar:40} {pos}/{len} rows")
+                            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+                    );
+                    let picture = render::top_view(&mut cp, size.clamp(16, 20_000), &|row| {
+                        bar.set_length(bar.length().unwrap_or(0).max(row));
+                        bar.set_position(row);
+                    });
+                    bar.finish_and_clear();
+                    picture
+                }
+            };
+            picture.write_png(&output)?;
+        }
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+fn main() -> ExitCode {
+    // A bug must still end in one line, not a panic trace.
+    std::panic::set_hook(Box::new(|info| {
+        let what = info.payload().downcast_ref::<&str>().copied().unwrap_or("unexpected state");
+        eprintln!("opencrg: internal error: {what}");
+    }));
+    let cli = Cli::parse();
+    match std::panic::catch_unwind(|| run(cli)) {
+        Ok(Ok(code)) => code,
+        Ok(Err(message)) => {
+            eprintln!("opencrg: {message}");
+            ExitCode::from(2)
+        }
+        Err(_) => ExitCode::from(2),
+    }
+}

@@ -1,0 +1,212 @@
+//! The `opencrg` command on roads these tests generate: info against the road's known
+//! figures, check on a good and a broken file, convert round trips through all four
+//! formats, eval against the library, render pictures, and bad input.
+
+use opencrg::synth::RoadSpec;
+use opencrg::{ContactPoint, Road};
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+use std::sync::Arc;
+
+fn dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("opencrg-cli-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// 30 m along heading 0.3 from (5, 7), v from -1.5 to 1.5, z = 0.02 u + 0.1 v (from -0.15
+/// to 0.75), NaN in one cell, options and modifiers in the file.
+fn spec() -> RoadSpec {
+    RoadSpec::straight(30.0, 3.0, 0.5, 0.25)
+        .starting_at(5.0, 7.0, 0.3)
+        .with_heading(|_| 0.3)
+        .with_elevation(|u, v| if u == 10.0 && v == 0.0 { f64::NAN } else { 0.02 * u + 0.1 * v })
+        .with_header_text("$ROAD_CRG_OPTS\nBORDER_MODE_V = 1\n$\n$ROAD_CRG_MODS\nSCALE_Z_GRID = 2.0\n$\n")
+}
+
+fn write_road(d: &Path) -> PathBuf {
+    let p = d.join("road.crg");
+    std::fs::write(&p, spec().to_crg()).unwrap();
+    p
+}
+
+fn opencrg(args: &[&str], stdin: Option<&str>) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_opencrg"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child.stdin.take().unwrap().write_all(stdin.unwrap_or("").as_bytes()).unwrap();
+    child.wait_with_output().unwrap()
+}
+
+fn text(b: &[u8]) -> String {
+    String::from_utf8_lossy(b).into_owned()
+}
+
+#[test]
+fn info_reports_the_known_figures() {
+    let d = dir("info");
+    let road = write_road(&d);
+    let out = opencrg(&["info", road.to_str().unwrap(), "--json"], None);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(j["format"], "KDBI");
+    assert_eq!(j["cross_sections"], 61);
+    assert_eq!(j["long_sections"], 13);
+    assert_eq!((j["u"]["first"].as_f64(), j["u"]["last"].as_f64()), (Some(0.0), Some(30.0)));
+    assert_eq!((j["v"]["right"].as_f64(), j["v"]["left"].as_f64()), (Some(-1.5), Some(1.5)));
+    let near = |v: &serde_json::Value, x: f64| (v.as_f64().unwrap() - x).abs() < 1e-6;
+    assert!(near(&j["elevation"]["min"], -0.15) && near(&j["elevation"]["max"], 0.75), "{}", j["elevation"]);
+    assert!(near(&j["reference_line"]["start"]["x"], 5.0) && near(&j["reference_line"]["start"]["y"], 7.0));
+    assert!(near(&j["reference_line"]["end"]["x"], 5.0 + 30.0 * 0.3f64.cos()));
+    assert!(near(&j["reference_line"]["end"]["y"], 7.0 + 30.0 * 0.3f64.sin()));
+    assert_eq!(j["nan_cells"], 1);
+    assert_eq!(j["options"]["border mode v"], 1);
+    assert_eq!(j["modifiers"]["modifier z scale"], 2.0);
+    // The text form carries the same figures.
+    let out = opencrg(&["info", road.to_str().unwrap()], None);
+    let t = text(&out.stdout);
+    assert!(t.contains("61 cross sections x 13 long sections") && t.contains("-0.1500 .. 0.7500 m"), "{t}");
+}
+
+#[test]
+fn check_passes_a_good_road_and_refuses_a_broken_one() {
+    let d = dir("check");
+    let road = write_road(&d);
+    let out = opencrg(&["check", road.to_str().unwrap()], None);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    // The same road with a modifier the check refuses; the binary data stays as it was.
+    let broken = d.join("broken.crg");
+    let original = spec().to_crg();
+    let separator: Vec<u8> = [b'$'; 80].iter().chain(b"\n").copied().collect();
+    let header_end = original.windows(81).position(|w| w == separator).unwrap() + 81;
+    let mut file = text(&original[..header_end]).replace("SCALE_Z_GRID = 2.0", "SCALE_LENGTH = -1.0").into_bytes();
+    file.extend_from_slice(&original[header_end..]);
+    std::fs::write(&broken, file).unwrap();
+    let out = opencrg(&["check", broken.to_str().unwrap()], None);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(text(&out.stderr).contains("SCALE_LENGTH"), "{}", text(&out.stderr));
+}
+
+#[test]
+fn convert_round_trips_through_every_format() {
+    let d = dir("convert");
+    let start = write_road(&d);
+    let original = Road::load(&start).unwrap();
+    let mut from = start.clone();
+    for (k, format) in ["LRFI", "KRBI", "LDFI", "KDBI"].iter().enumerate() {
+        let to = d.join(format!("step{k}.crg"));
+        let out = opencrg(
+            &["convert", from.to_str().unwrap(), to.to_str().unwrap(), "--format", &format.to_lowercase()],
+            None,
+        );
+        assert!(out.status.success(), "{format}: {}", text(&out.stderr));
+        let back = Road::load(&to).unwrap();
+        assert_eq!(back.format().name(), *format);
+        let (a, b) = (original.grid(), back.grid());
+        assert_eq!((a.nu, a.nv), (b.nu, b.nv));
+        for (x, y) in a.z.iter().zip(&b.z) {
+            assert!((x.is_nan() && y.is_nan()) || (x - y).abs() <= 1e-6 * x.abs().max(1.0), "{format}: {x} vs {y}");
+        }
+        assert_eq!(back.u_range(), original.u_range());
+        assert_eq!(back.options(), original.options(), "{format}: options kept");
+        assert_eq!(back.modifiers(), original.modifiers(), "{format}: modifiers kept");
+        assert!(
+            back.header().comments.iter().any(|c| c.contains("generated by opencrg::synth")),
+            "{format}: comments kept"
+        );
+        from = to;
+    }
+}
+
+#[test]
+fn eval_prints_the_library_answers() {
+    let d = dir("eval");
+    let road = write_road(&d);
+    let out =
+        opencrg(&["eval", road.to_str().unwrap(), "--border-mode-v", "keep"], Some("3 0.5\n# comment\n12.25, -0.75\n"));
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let t = text(&out.stdout);
+    let lines: Vec<&str> = t.lines().collect();
+    assert_eq!(lines[0], "u,v,x,y,z,phi,curv");
+    assert_eq!(lines.len(), 3);
+    // The same answers from the library, prepared as the C API prepares roads.
+    let mut r = Road::load(&road).unwrap();
+    r.check().unwrap();
+    r.apply_modifiers();
+    let mut cp = ContactPoint::new(Arc::new(r));
+    cp.set_option_int(opencrg::settings::opt::BORDER_MODE_V, 2).unwrap();
+    for (line, (u, v)) in lines[1..].iter().zip([(3.0, 0.5), (12.25, -0.75)]) {
+        let f: Vec<f64> = line.split(',').map(|s| s.parse().unwrap()).collect();
+        let (x, y) = cp.uv_to_xy(u, v).unwrap();
+        let z = cp.uv_to_z(u, v).unwrap();
+        let (phi, curv) = cp.uv_to_pk(u, v).unwrap();
+        assert_eq!(f, vec![u, v, x, y, z, phi, curv]);
+    }
+    // x/y input.
+    let out = opencrg(&["eval", road.to_str().unwrap(), "--xy"], Some("5 7\n"));
+    let t = text(&out.stdout);
+    assert!(t.starts_with("x,y,u,v,z,phi,curv\n5,7,"), "{t}");
+    // A bad line: one line on stderr, exit status 2.
+    let out = opencrg(&["eval", road.to_str().unwrap()], Some("1 2\nabc\n"));
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(text(&out.stderr).trim().lines().count(), 1, "{}", text(&out.stderr));
+    assert!(text(&out.stderr).contains("stdin:2"));
+}
+
+fn png_size(path: &Path) -> (u32, u32, Vec<u8>) {
+    let decoder = png::Decoder::new(std::fs::File::open(path).unwrap());
+    let mut reader = decoder.read_info().unwrap();
+    let mut buf = vec![0; reader.output_buffer_size()];
+    let info = reader.next_frame(&mut buf).unwrap();
+    buf.truncate(info.buffer_size());
+    (info.width, info.height, buf)
+}
+
+#[test]
+fn render_draws_the_road_and_its_sections() {
+    let d = dir("render");
+    let road = write_road(&d);
+    let picture = d.join("top.png");
+    let out = opencrg(&["render", road.to_str().unwrap(), picture.to_str().unwrap(), "--size", "400"], None);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let (w, h, pixels) = png_size(&picture);
+    assert!(w > 400 && h > 100, "{w} x {h}");
+    // Coloured pixels (the road and the colour bar), not only white and black.
+    let coloured = pixels.chunks(3).filter(|p| !(p[0] == p[1] && p[1] == p[2])).count();
+    assert!(coloured > 2000, "{coloured} coloured pixels");
+    for section in ["u=15", "v=0.5"] {
+        let p = d.join(format!("profile-{}.png", &section[..1]));
+        let out = opencrg(&["render", road.to_str().unwrap(), p.to_str().unwrap(), "--profile", section], None);
+        assert!(out.status.success(), "{section}: {}", text(&out.stderr));
+        let (w, h, pixels) = png_size(&p);
+        assert_eq!((w, h), (900, 360));
+        let line = pixels.chunks(3).filter(|p| p == &[30, 90, 200]).count();
+        assert!(line > 500, "{section}: {line} pixels of the line");
+    }
+    let out = opencrg(&["render", road.to_str().unwrap(), picture.to_str().unwrap(), "--profile", "w=1"], None);
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn bad_input_gives_one_line_and_status_2() {
+    let d = dir("bad");
+    let garbage = d.join("garbage.crg");
+    std::fs::write(&garbage, b"\x00\x01 not a road\n$$$$\nxx").unwrap();
+    for args in [
+        vec!["info", garbage.to_str().unwrap()],
+        vec!["check", garbage.to_str().unwrap()],
+        vec!["render", garbage.to_str().unwrap(), "/tmp/never.png"],
+        vec!["info", "/no/such/file.crg"],
+    ] {
+        let out = opencrg(&args, None);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = text(&out.stderr);
+        assert_eq!(err.trim().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.starts_with("opencrg: ") && !err.contains("panicked"), "{err}");
+    }
+}
