@@ -614,6 +614,101 @@ int crgEvaluv2pk(int cpId, double u, double v, double *phi, double *curv);
  */
 int crgEvalxy2pk(int cpId, double x, double y, double *phi, double *curv);
 
+/*
+ ======================================================================================
+ EXTENSIONS of this library, not in the reference library's API: batch evaluation
+ (crgEval...N) and raw data access (crgDataSetGetGrid..., crgDataSetGetRefLine).
+ ======================================================================================
+
+ Elevation of `n` points (u[i], v[i]) into z[i]: the same answers as `crgEvaluv2z`
+ called on each point in order; NaN where that call fails. Returns how many succeeded.
+
+ # Safety
+ `u`, `v` and `z` point to `n` doubles each.
+ */
+int crgEvaluv2zN(int cpId, int n, const double *u, const double *v, double *z);
+
+/*
+ Elevation of `n` points (x[i], y[i]), as `crgEvalxy2z` on each in order.
+
+ # Safety
+ `x`, `y` and `z` point to `n` doubles each.
+ */
+int crgEvalxy2zN(int cpId, int n, const double *x, const double *y, double *z);
+
+/*
+ x/y of `n` points (u[i], v[i]), as `crgEvaluv2xy` on each in order.
+
+ # Safety
+ `u`, `v`, `x` and `y` point to `n` doubles each.
+ */
+int crgEvaluv2xyN(int cpId, int n, const double *u, const double *v, double *x, double *y);
+
+/*
+ u/v of `n` points (x[i], y[i]), as `crgEvalxy2uv` on each in order (the search
+ history carries from point to point).
+
+ # Safety
+ `x`, `y`, `u` and `v` point to `n` doubles each.
+ */
+int crgEvalxy2uvN(int cpId, int n, const double *x, const double *y, double *u, double *v);
+
+/*
+ Heading and curvature of `n` points (u[i], v[i]), as `crgEvaluv2pk` on each in order.
+
+ # Safety
+ `u`, `v`, `phi` and `curv` point to `n` doubles each.
+ */
+int crgEvaluv2pkN(int cpId, int n, const double *u, const double *v, double *phi, double *curv);
+
+/*
+ Heading and curvature of `n` points (x[i], y[i]), as `crgEvalxy2pk` on each in order.
+
+ # Safety
+ `x`, `y`, `phi` and `curv` point to `n` doubles each.
+ */
+int crgEvalxy2pkN(int cpId, int n, const double *x, const double *y, double *phi, double *curv);
+
+/*
+ The number of cross sections (u) and long sections (v) of the elevation grid.
+ Either pointer may be NULL. Returns 1, or 0 for an unknown data set.
+
+ # Safety
+ Non-null pointers point to an int each.
+ */
+int crgDataSetGetGridSize(int dataSetId, int *nU, int *nV);
+
+/*
+ The v position of every long section into v[0 .. nV). Returns 1, or 0 when `nV`
+ is not the grid's number of long sections, `v` is NULL or the data set unknown.
+
+ # Safety
+ `v` points to `nV` doubles.
+ */
+int crgDataSetGetGridV(int dataSetId, double *v, int nV);
+
+/*
+ The elevation grid into z[i * nV + j] (cross section i, long section j), NaN kept,
+ the road's z offset included: the surface evaluation adds the reference line z and
+ the banking to these values. Returns 1, or 0 when `nU` x `nV` is not the grid's size,
+ `z` is NULL or the data set unknown.
+
+ # Safety
+ `z` points to `nU * nV` floats.
+ */
+int crgDataSetGetGridZ(int dataSetId, float *z, int nU, int nV);
+
+/*
+ The reference line at every cross section: u, x, y, heading (the heading channel's
+ value, or the start heading without one) and z (the reference line's elevation).
+ Any pointer may be NULL. Returns 1, or 0 when `nU` is not the number of cross
+ sections or the data set is unknown.
+
+ # Safety
+ Non-null pointers point to `nU` doubles each.
+ */
+int crgDataSetGetRefLine(int dataSetId, double *u, double *x, double *y, double *phi, double *z, int nU);
+
 extern void crgMsgPrint(int level, const char *format, ...);
 
 #ifdef __cplusplus

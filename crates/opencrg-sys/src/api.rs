@@ -62,12 +62,12 @@ fn on_road_mut<T>(func: &str, id: c_int, f: impl FnOnce(&mut Road) -> T) -> Opti
 
 /// `on_cp` inside the panic guard, `on_error` for an unknown id. `f` must not send messages.
 #[inline(always)]
-fn cp_call<R: Copy>(func: &str, id: c_int, on_error: R, f: impl FnOnce(&mut ContactPoint) -> R) -> R {
+pub(crate) fn cp_call<R: Copy>(func: &str, id: c_int, on_error: R, f: impl FnOnce(&mut ContactPoint) -> R) -> R {
     guard(func, on_error, || on_cp(func, id, f).unwrap_or(on_error))
 }
 
 /// `on_road` inside the panic guard, `on_error` for an unknown id.
-fn road_read<R: Copy>(func: &str, id: c_int, on_error: R, f: impl FnOnce(&Road) -> R) -> R {
+pub(crate) fn road_read<R: Copy>(func: &str, id: c_int, on_error: R, f: impl FnOnce(&Road) -> R) -> R {
     guard(func, on_error, || on_road(func, id, f).unwrap_or(on_error))
 }
 

@@ -8,6 +8,7 @@
 mod alloc;
 mod api;
 mod barrier;
+mod extensions;
 mod msg;
 mod panic;
 mod profile;
@@ -15,6 +16,7 @@ mod registry;
 mod report;
 
 pub use api::*;
+pub use extensions::*;
 
 use std::ffi::{c_int, c_uint};
 

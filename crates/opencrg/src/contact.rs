@@ -136,6 +136,18 @@ impl ContactPoint {
         elevation(eval::uv_to_z(&self.road, &self.eval, u, v))
     }
 
+    /// [`ContactPoint::uv_to_z`] without starting the grid's memory fetch (the caller
+    /// started it earlier).
+    #[inline(always)]
+    pub(crate) fn uv_to_z_fetched(&self, u: f64, v: f64) -> Result<f64> {
+        // The common case's lean path first (same answers), the general one for the rest.
+        if let Some(z) = eval::uv_to_z_plain(&self.road, &self.eval, u, v) {
+            return Ok(z);
+        }
+        finite(u, v)?;
+        elevation(eval::uv_to_z(&self.road, &self.eval, u, v))
+    }
+
     /// Elevation at (u, v) for the common case only (inside an evenly spaced grid, no
     /// smoothing zone); `None` for every other case, where [`ContactPoint::uv_to_z`]
     /// answers. Never panics.

@@ -17,6 +17,7 @@
 // Comparisons like `!(x > 0.0)` are meant to reject NaN as well; they stay.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+mod batch;
 mod check;
 mod compat;
 mod contact;

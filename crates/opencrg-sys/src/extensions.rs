@@ -1,0 +1,254 @@
+//! Extensions of the classic API (all named `crg...`, declared in their own section of
+//! `crgBaseLib.h`): batch evaluation and raw data access.
+//!
+//! Pointers come from C: every one is checked for null and turned into a slice of the
+//! length the caller gives, through the two helpers below.
+
+use crate::api::{cp_call, road_read};
+use opencrg::ContactPoint;
+use std::ffi::c_int;
+
+/// `n` values at `p` as a slice; `None` for a null pointer (an empty slice for n = 0).
+///
+/// # Safety
+/// A non-null `p` must point to `n` readable values that stay valid and unchanged for `'a`.
+unsafe fn input<'a, T>(p: *const T, n: usize) -> Option<&'a [T]> {
+    match (p.is_null(), n) {
+        (_, 0) => Some(&[]),
+        (true, _) => None,
+        // SAFETY: the caller's promise, passed on from the C API's contract.
+        (false, _) => Some(unsafe { std::slice::from_raw_parts(p, n) }),
+    }
+}
+
+/// `n` values at `p` as a writable slice; `None` for a null pointer.
+///
+/// # Safety
+/// A non-null `p` must point to `n` writable values, valid for `'a`, that nothing else
+/// reads or writes meanwhile.
+unsafe fn output<'a, T>(p: *mut T, n: usize) -> Option<&'a mut [T]> {
+    match (p.is_null(), n) {
+        (_, 0) => Some(&mut []),
+        (true, _) => None,
+        // SAFETY: the caller's promise, passed on from the C API's contract.
+        (false, _) => Some(unsafe { std::slice::from_raw_parts_mut(p, n) }),
+    }
+}
+
+/// Runs a batch on a contact point: two inputs, `K` outputs of `n` values each.
+fn batch<const K: usize>(
+    func: &str,
+    cp_id: c_int,
+    n: c_int,
+    inputs: [*const f64; 2],
+    outputs: [*mut f64; K],
+    f: impl FnOnce(&mut ContactPoint, [&[f64]; 2], [&mut [f64]; K]) -> usize,
+) -> c_int {
+    let Ok(n) = usize::try_from(n) else { return 0 };
+    // SAFETY: the C caller gives `n` values behind every pointer (the functions' contract).
+    let (Some(a), Some(b)) = (unsafe { input(inputs[0], n) }, unsafe { input(inputs[1], n) }) else { return 0 };
+    let mut outs = Vec::with_capacity(K);
+    for p in outputs {
+        // SAFETY: as above, for the outputs.
+        let Some(o) = (unsafe { output(p, n) }) else { return 0 };
+        outs.push(o);
+    }
+    let Ok(outs) = <[&mut [f64]; K]>::try_from(outs) else { return 0 };
+    cp_call(func, cp_id, 0, |cp| c_int::try_from(f(cp, [a, b], outs)).unwrap_or(c_int::MAX))
+}
+
+/// ======================================================================================
+/// EXTENSIONS of this library, not in the reference library's API: batch evaluation
+/// (crgEval...N) and raw data access (crgDataSetGetGrid..., crgDataSetGetRefLine).
+/// ======================================================================================
+///
+/// Elevation of `n` points (u[i], v[i]) into z[i]: the same answers as `crgEvaluv2z`
+/// called on each point in order; NaN where that call fails. Returns how many succeeded.
+///
+/// # Safety
+/// `u`, `v` and `z` point to `n` doubles each.
+#[no_mangle]
+pub unsafe extern "C" fn crgEvaluv2zN(cpId: c_int, n: c_int, u: *const f64, v: *const f64, z: *mut f64) -> c_int {
+    batch("crgEvaluv2zN", cpId, n, [u, v], [z], |cp, [u, v], [z]| cp.uv_to_z_many(u, v, z))
+}
+
+/// Elevation of `n` points (x[i], y[i]), as `crgEvalxy2z` on each in order.
+///
+/// # Safety
+/// `x`, `y` and `z` point to `n` doubles each.
+#[no_mangle]
+pub unsafe extern "C" fn crgEvalxy2zN(cpId: c_int, n: c_int, x: *const f64, y: *const f64, z: *mut f64) -> c_int {
+    batch("crgEvalxy2zN", cpId, n, [x, y], [z], |cp, [x, y], [z]| cp.xy_to_z_many(x, y, z))
+}
+
+/// x/y of `n` points (u[i], v[i]), as `crgEvaluv2xy` on each in order.
+///
+/// # Safety
+/// `u`, `v`, `x` and `y` point to `n` doubles each.
+#[no_mangle]
+pub unsafe extern "C" fn crgEvaluv2xyN(
+    cpId: c_int,
+    n: c_int,
+    u: *const f64,
+    v: *const f64,
+    x: *mut f64,
+    y: *mut f64,
+) -> c_int {
+    batch("crgEvaluv2xyN", cpId, n, [u, v], [x, y], |cp, [u, v], [x, y]| cp.uv_to_xy_many(u, v, x, y))
+}
+
+/// u/v of `n` points (x[i], y[i]), as `crgEvalxy2uv` on each in order (the search
+/// history carries from point to point).
+///
+/// # Safety
+/// `x`, `y`, `u` and `v` point to `n` doubles each.
+#[no_mangle]
+pub unsafe extern "C" fn crgEvalxy2uvN(
+    cpId: c_int,
+    n: c_int,
+    x: *const f64,
+    y: *const f64,
+    u: *mut f64,
+    v: *mut f64,
+) -> c_int {
+    batch("crgEvalxy2uvN", cpId, n, [x, y], [u, v], |cp, [x, y], [u, v]| cp.xy_to_uv_many(x, y, u, v))
+}
+
+/// Heading and curvature of `n` points (u[i], v[i]), as `crgEvaluv2pk` on each in order.
+///
+/// # Safety
+/// `u`, `v`, `phi` and `curv` point to `n` doubles each.
+#[no_mangle]
+pub unsafe extern "C" fn crgEvaluv2pkN(
+    cpId: c_int,
+    n: c_int,
+    u: *const f64,
+    v: *const f64,
+    phi: *mut f64,
+    curv: *mut f64,
+) -> c_int {
+    batch("crgEvaluv2pkN", cpId, n, [u, v], [phi, curv], |cp, [u, v], [p, c]| cp.uv_to_pk_many(u, v, p, c))
+}
+
+/// Heading and curvature of `n` points (x[i], y[i]), as `crgEvalxy2pk` on each in order.
+///
+/// # Safety
+/// `x`, `y`, `phi` and `curv` point to `n` doubles each.
+#[no_mangle]
+pub unsafe extern "C" fn crgEvalxy2pkN(
+    cpId: c_int,
+    n: c_int,
+    x: *const f64,
+    y: *const f64,
+    phi: *mut f64,
+    curv: *mut f64,
+) -> c_int {
+    batch("crgEvalxy2pkN", cpId, n, [x, y], [phi, curv], |cp, [x, y], [p, c]| cp.xy_to_pk_many(x, y, p, c))
+}
+
+/// The number of cross sections (u) and long sections (v) of the elevation grid.
+/// Either pointer may be NULL. Returns 1, or 0 for an unknown data set.
+///
+/// # Safety
+/// Non-null pointers point to an int each.
+#[no_mangle]
+pub unsafe extern "C" fn crgDataSetGetGridSize(dataSetId: c_int, nU: *mut c_int, nV: *mut c_int) -> c_int {
+    road_read("crgDataSetGetGridSize", dataSetId, 0, |r| {
+        let g = r.grid();
+        for (p, value) in [(nU, g.nu), (nV, g.nv)] {
+            // SAFETY: one int behind a non-null pointer (the contract).
+            if let Some([slot]) = unsafe { output(p, 1) } {
+                *slot = c_int::try_from(value).unwrap_or(c_int::MAX);
+            }
+        }
+        1
+    })
+}
+
+/// The v position of every long section into v[0 .. nV). Returns 1, or 0 when `nV`
+/// is not the grid's number of long sections, `v` is NULL or the data set unknown.
+///
+/// # Safety
+/// `v` points to `nV` doubles.
+#[no_mangle]
+pub unsafe extern "C" fn crgDataSetGetGridV(dataSetId: c_int, v: *mut f64, nV: c_int) -> c_int {
+    road_read("crgDataSetGetGridV", dataSetId, 0, |r| {
+        let g = r.grid();
+        if usize::try_from(nV).ok() != Some(g.nv) {
+            return 0;
+        }
+        // SAFETY: `nV` doubles behind `v` (the contract).
+        let Some(out) = (unsafe { output(v, g.nv) }) else { return 0 };
+        out.copy_from_slice(&g.v);
+        1
+    })
+}
+
+/// The elevation grid into z[i * nV + j] (cross section i, long section j), NaN kept,
+/// the road's z offset included: the surface evaluation adds the reference line z and
+/// the banking to these values. Returns 1, or 0 when `nU` x `nV` is not the grid's size,
+/// `z` is NULL or the data set unknown.
+///
+/// # Safety
+/// `z` points to `nU * nV` floats.
+#[no_mangle]
+pub unsafe extern "C" fn crgDataSetGetGridZ(dataSetId: c_int, z: *mut f32, nU: c_int, nV: c_int) -> c_int {
+    road_read("crgDataSetGetGridZ", dataSetId, 0, |r| {
+        let g = r.grid();
+        if usize::try_from(nU).ok() != Some(g.nu) || usize::try_from(nV).ok() != Some(g.nv) {
+            return 0;
+        }
+        // SAFETY: `nU * nV` floats behind `z` (the contract).
+        let Some(out) = (unsafe { output(z, g.nu * g.nv) }) else { return 0 };
+        if g.mean == 0.0 {
+            out.copy_from_slice(&g.z);
+        } else {
+            for (o, &value) in out.iter_mut().zip(&g.z) {
+                *o = (f64::from(value) + g.mean) as f32;
+            }
+        }
+        1
+    })
+}
+
+/// The reference line at every cross section: u, x, y, heading (the heading channel's
+/// value, or the start heading without one) and z (the reference line's elevation).
+/// Any pointer may be NULL. Returns 1, or 0 when `nU` is not the number of cross
+/// sections or the data set is unknown.
+///
+/// # Safety
+/// Non-null pointers point to `nU` doubles each.
+#[no_mangle]
+pub unsafe extern "C" fn crgDataSetGetRefLine(
+    dataSetId: c_int,
+    u: *mut f64,
+    x: *mut f64,
+    y: *mut f64,
+    phi: *mut f64,
+    z: *mut f64,
+    nU: c_int,
+) -> c_int {
+    road_read("crgDataSetGetRefLine", dataSetId, 0, |r| {
+        let l = r.reference_line();
+        let n = l.n;
+        if usize::try_from(nU).ok() != Some(n) {
+            return 0;
+        }
+        let value = |k: usize, i: usize| match k {
+            0 => l.u_first + i as f64 * l.u_inc,
+            1 => l.x[i],
+            2 => l.y[i],
+            3 => l.phi.as_ref().map_or(l.phi_first, |p| p[i]),
+            _ => l.z.as_ref().map_or(l.z_first, |z| z[i]),
+        };
+        for (k, p) in [u, x, y, phi, z].into_iter().enumerate() {
+            // SAFETY: `nU` doubles behind each non-null pointer (the contract).
+            if let Some(out) = unsafe { output(p, n) } {
+                for (i, o) in out.iter_mut().enumerate() {
+                    *o = value(k, i);
+                }
+            }
+        }
+        1
+    })
+}

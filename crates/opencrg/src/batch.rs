@@ -1,0 +1,142 @@
+//! Batch evaluation: many points through one contact point in one call, with the same
+//! answers as the single-point calls made in order (the x/y search history included).
+//! The elevation batch starts fetching the grid cells of points a few places ahead,
+//! so the memory accesses of several points overlap.
+
+use crate::contact::ContactPoint;
+use crate::error::Result;
+
+/// How many points ahead the elevation batch starts loading grid cells.
+const PREFETCH_AHEAD: usize = 16;
+
+/// Writes one answer per point: the value, or NaN in every output where the call failed;
+/// returns how many succeeded.
+fn each<const K: usize>(n: usize, out: &mut [&mut [f64]; K], mut f: impl FnMut(usize) -> Result<[f64; K]>) -> usize {
+    let mut ok = 0;
+    for i in 0..n {
+        let values = match f(i) {
+            Ok(values) => {
+                ok += 1;
+                values
+            }
+            Err(_) => [f64::NAN; K],
+        };
+        for (slot, value) in out.iter_mut().zip(values) {
+            slot[i] = value;
+        }
+    }
+    ok
+}
+
+/// The number of points: the shortest of the slices.
+fn count(inputs: [&[f64]; 2], outputs: &[&mut [f64]]) -> usize {
+    outputs.iter().map(|o| o.len()).fold(inputs[0].len().min(inputs[1].len()), usize::min)
+}
+
+impl ContactPoint {
+    /// [`ContactPoint::uv_to_z`] for every (u[i], v[i]) into z[i] (NaN where it fails);
+    /// returns how many succeeded. The shortest slice sets the number of points.
+    pub fn uv_to_z_many(&self, u: &[f64], v: &[f64], z: &mut [f64]) -> usize {
+        let n = count([u, v], &[&mut *z]);
+        let road = &**self.road();
+        for i in 0..n.min(PREFETCH_AHEAD) {
+            road.prefetch.prefetch(road, u[i], v[i]);
+        }
+        each(n, &mut [z], |i| {
+            let ahead = i + PREFETCH_AHEAD;
+            if ahead < n {
+                road.prefetch.prefetch(road, u[ahead], v[ahead]);
+            }
+            self.uv_to_z_fetched(u[i], v[i]).map(|z| [z])
+        })
+    }
+
+    /// [`ContactPoint::uv_to_xy`] for every point into x[i], y[i].
+    pub fn uv_to_xy_many(&self, u: &[f64], v: &[f64], x: &mut [f64], y: &mut [f64]) -> usize {
+        let n = count([u, v], &[&mut *x, &mut *y]);
+        each(n, &mut [x, y], |i| self.uv_to_xy(u[i], v[i]).map(|(a, b)| [a, b]))
+    }
+
+    /// [`ContactPoint::uv_to_pk`] for every point into phi[i], curv[i].
+    pub fn uv_to_pk_many(&self, u: &[f64], v: &[f64], phi: &mut [f64], curv: &mut [f64]) -> usize {
+        let n = count([u, v], &[&mut *phi, &mut *curv]);
+        each(n, &mut [phi, curv], |i| self.uv_to_pk(u[i], v[i]).map(|(a, b)| [a, b]))
+    }
+
+    /// [`ContactPoint::xy_to_uv`] for every point, in order (each answer updates the
+    /// search history the next one starts from).
+    pub fn xy_to_uv_many(&mut self, x: &[f64], y: &[f64], u: &mut [f64], v: &mut [f64]) -> usize {
+        let n = count([x, y], &[&mut *u, &mut *v]);
+        each(n, &mut [u, v], |i| self.xy_to_uv(x[i], y[i]).map(|(a, b)| [a, b]))
+    }
+
+    /// [`ContactPoint::xy_to_z`] for every point, in order.
+    pub fn xy_to_z_many(&mut self, x: &[f64], y: &[f64], z: &mut [f64]) -> usize {
+        let n = count([x, y], &[&mut *z]);
+        each(n, &mut [z], |i| self.xy_to_z(x[i], y[i]).map(|z| [z]))
+    }
+
+    /// [`ContactPoint::xy_to_pk`] for every point, in order.
+    pub fn xy_to_pk_many(&mut self, x: &[f64], y: &[f64], phi: &mut [f64], curv: &mut [f64]) -> usize {
+        let n = count([x, y], &[&mut *phi, &mut *curv]);
+        each(n, &mut [phi, curv], |i| self.xy_to_pk(x[i], y[i]).map(|(a, b)| [a, b]))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::synth::RoadSpec;
+    use crate::ContactPoint;
+    use std::sync::Arc;
+
+    /// Batches equal the single calls bit for bit, failures as NaN, on points inside,
+    /// on the borders, outside, and NaN, in every v border mode.
+    #[test]
+    fn batches_equal_single_calls() {
+        let road = RoadSpec::straight(20.0, 4.0, 0.1, 0.25)
+            .with_heading(|u| 0.02 * u)
+            .with_bank(|u| 0.01 * u)
+            .with_elevation(|u, v| (u * 0.7).sin() * 0.01 + v * 0.02)
+            .build()
+            .unwrap();
+        let road = Arc::new(road);
+        let mut seed = 7u64;
+        let mut next = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut u: Vec<f64> = (0..500).map(|_| next() * 30.0 - 5.0).collect();
+        let mut v: Vec<f64> = (0..500).map(|_| next() * 8.0 - 4.0).collect();
+        u[3] = f64::NAN;
+        v[4] = 20.0;
+        u[5] = 20.0;
+        for mode in 0..=4 {
+            let mut single = ContactPoint::new(road.clone());
+            single.set_option_int(crate::settings::opt::BORDER_MODE_V, mode).unwrap();
+            let mut batch = single.clone();
+            let mut z = vec![0.0; u.len()];
+            let ok = batch.uv_to_z_many(&u, &v, &mut z);
+            let mut expected_ok = 0;
+            for i in 0..u.len() {
+                match single.uv_to_z(u[i], v[i]) {
+                    Ok(e) => {
+                        expected_ok += 1;
+                        assert_eq!(e.to_bits(), z[i].to_bits(), "mode {mode}, point {i}");
+                    }
+                    Err(_) => assert!(z[i].is_nan()),
+                }
+            }
+            assert_eq!(ok, expected_ok);
+            let (mut x, mut y) = (vec![0.0; u.len()], vec![0.0; u.len()]);
+            batch.uv_to_xy_many(&u, &v, &mut x, &mut y);
+            let (mut bu, mut bv) = (vec![0.0; u.len()], vec![0.0; u.len()]);
+            batch.xy_to_uv_many(&x, &y, &mut bu, &mut bv);
+            for i in 0..u.len() {
+                let p = single.uv_to_xy(u[i], v[i]).unwrap_or((f64::NAN, f64::NAN));
+                assert_eq!((p.0.to_bits(), p.1.to_bits()), (x[i].to_bits(), y[i].to_bits()));
+                let q = single.xy_to_uv(x[i], y[i]).unwrap_or((f64::NAN, f64::NAN));
+                assert_eq!((q.0.to_bits(), q.1.to_bits()), (bu[i].to_bits(), bv[i].to_bits()), "point {i}");
+            }
+        }
+    }
+}
