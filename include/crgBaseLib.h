@@ -617,7 +617,8 @@ int crgEvalxy2pk(int cpId, double x, double y, double *phi, double *curv);
 /*
  ======================================================================================
  EXTENSIONS of this library, not in the reference library's API: batch evaluation
- (crgEval...N) and raw data access (crgDataSetGetGrid..., crgDataSetGetRefLine).
+ (crgEval...N), surface normals (crgEval...zn) and raw data access
+ (crgDataSetGetGrid..., crgDataSetGetRefLine).
  ======================================================================================
 
  Elevation of `n` points (u[i], v[i]) into z[i]: the same answers as `crgEvaluv2z`
@@ -668,6 +669,27 @@ int crgEvaluv2pkN(int cpId, int n, const double *u, const double *v, double *phi
  `x`, `y`, `phi` and `curv` point to `n` doubles each.
  */
 int crgEvalxy2pkN(int cpId, int n, const double *x, const double *y, double *phi, double *curv);
+
+/*
+ Elevation and the upward unit normal (nx, ny, nz in x/y/z) of the evaluated surface
+ at (u, v): the analytic gradient of the interpolation (grid, reference line z, slope,
+ banking, border modes, smoothing). On a cell edge, the gradient of the cell the
+ evaluation uses (towards larger u and v). Any pointer may be NULL. Returns 1, or 0
+ where `crgEvaluv2z` would fail.
+
+ # Safety
+ Non-null pointers point to a double each.
+ */
+int crgEvaluv2zn(int cpId, double u, double v, double *z, double *nx, double *ny, double *nz);
+
+/*
+ Elevation and normal at the point (x, y): those of `crgEvaluv2zn` at the (u, v) that
+ `crgEvalxy2uv` finds (the search history moves as with `crgEvalxy2uv`).
+
+ # Safety
+ Non-null pointers point to a double each.
+ */
+int crgEvalxy2zn(int cpId, double x, double y, double *z, double *nx, double *ny, double *nz);
 
 /*
  The number of cross sections (u) and long sections (v) of the elevation grid.

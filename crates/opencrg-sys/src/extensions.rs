@@ -1,5 +1,5 @@
 //! Extensions of the classic API (all named `crg...`, declared in their own section of
-//! `crgBaseLib.h`): batch evaluation and raw data access.
+//! `crgBaseLib.h`): batch evaluation, surface normals and raw data access.
 //!
 //! Pointers come from C: every one is checked for null and turned into a slice of the
 //! length the caller gives, through the two helpers below.
@@ -59,7 +59,8 @@ fn batch<const K: usize>(
 
 /// ======================================================================================
 /// EXTENSIONS of this library, not in the reference library's API: batch evaluation
-/// (crgEval...N) and raw data access (crgDataSetGetGrid..., crgDataSetGetRefLine).
+/// (crgEval...N), surface normals (crgEval...zn) and raw data access
+/// (crgDataSetGetGrid..., crgDataSetGetRefLine).
 /// ======================================================================================
 ///
 /// Elevation of `n` points (u[i], v[i]) into z[i]: the same answers as `crgEvaluv2z`
@@ -144,6 +145,58 @@ pub unsafe extern "C" fn crgEvalxy2pkN(
     curv: *mut f64,
 ) -> c_int {
     batch("crgEvalxy2pkN", cpId, n, [x, y], [phi, curv], |cp, [x, y], [p, c]| cp.xy_to_pk_many(x, y, p, c))
+}
+
+/// Writes an elevation and a normal through the pointers that are not NULL; 1, or 0
+/// (and nothing written) when the evaluation failed.
+fn put_normal(answer: opencrg::Result<(f64, [f64; 3])>, z: *mut f64, n: [*mut f64; 3]) -> c_int {
+    let Ok((value, normal)) = answer else { return 0 };
+    for (p, v) in std::iter::once((z, value)).chain(n.into_iter().zip(normal)) {
+        // SAFETY: one double behind every non-null pointer (the contract).
+        if let Some([slot]) = unsafe { output(p, 1) } {
+            *slot = v;
+        }
+    }
+    1
+}
+
+/// Elevation and the upward unit normal (nx, ny, nz in x/y/z) of the evaluated surface
+/// at (u, v): the analytic gradient of the interpolation (grid, reference line z, slope,
+/// banking, border modes, smoothing). On a cell edge, the gradient of the cell the
+/// evaluation uses (towards larger u and v). Any pointer may be NULL. Returns 1, or 0
+/// where `crgEvaluv2z` would fail.
+///
+/// # Safety
+/// Non-null pointers point to a double each.
+#[no_mangle]
+pub unsafe extern "C" fn crgEvaluv2zn(
+    cpId: c_int,
+    u: f64,
+    v: f64,
+    z: *mut f64,
+    nx: *mut f64,
+    ny: *mut f64,
+    nz: *mut f64,
+) -> c_int {
+    cp_call("crgEvaluv2zn", cpId, 0, |cp| put_normal(cp.uv_to_normal(u, v), z, [nx, ny, nz]))
+}
+
+/// Elevation and normal at the point (x, y): those of `crgEvaluv2zn` at the (u, v) that
+/// `crgEvalxy2uv` finds (the search history moves as with `crgEvalxy2uv`).
+///
+/// # Safety
+/// Non-null pointers point to a double each.
+#[no_mangle]
+pub unsafe extern "C" fn crgEvalxy2zn(
+    cpId: c_int,
+    x: f64,
+    y: f64,
+    z: *mut f64,
+    nx: *mut f64,
+    ny: *mut f64,
+    nz: *mut f64,
+) -> c_int {
+    cp_call("crgEvalxy2zn", cpId, 0, |cp| put_normal(cp.xy_to_normal(x, y), z, [nx, ny, nz]))
 }
 
 /// The number of cross sections (u) and long sections (v) of the elevation grid.

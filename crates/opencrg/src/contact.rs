@@ -172,6 +172,23 @@ impl ContactPoint {
         Ok(search::xy_to_uv(&road.line, &road.index, &self.eval, &mut self.history, x, y))
     }
 
+    /// Elevation and the upward unit normal (x, y, z components) of the evaluated
+    /// surface at (u, v): the analytic gradient of the interpolation (see the
+    /// module notes of `normal.rs` for cell edges and borders).
+    pub fn uv_to_normal(&self, u: f64, v: f64) -> Result<(f64, [f64; 3])> {
+        finite(u, v)?;
+        match crate::normal::uv_normal(&self.road, &self.eval, u, v) {
+            Some(answer) => Ok(answer),
+            None => Err(Error::Eval("outside the road with border mode none")),
+        }
+    }
+
+    /// Elevation and the upward unit normal at the point (x, y): those at its (u, v).
+    pub fn xy_to_normal(&mut self, x: f64, y: f64) -> Result<(f64, [f64; 3])> {
+        let (u, v) = self.xy_to_uv(x, y)?;
+        self.uv_to_normal(u, v)
+    }
+
     /// Elevation at the point (x, y).
     #[inline]
     pub fn xy_to_z(&mut self, x: f64, y: f64) -> Result<f64> {

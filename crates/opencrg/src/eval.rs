@@ -89,22 +89,27 @@ pub fn uv_to_xy(road: &Road, options: &EvalOptions, u: f64, v: f64) -> (f64, f64
 }
 
 /// Where u lies after its border mode is applied.
-struct UPlace {
+pub(crate) struct UPlace {
     /// Interval index and fraction in the grid.
-    index: usize,
-    frac: f64,
+    pub index: usize,
+    pub frac: f64,
     /// u, moved into the data by the repeat and reflect modes.
-    u: f64,
+    pub u: f64,
     /// Whether u is inside the data (after moving).
-    in_core: bool,
+    pub in_core: bool,
     /// The border mode that applied (`NONE` inside the data).
-    mode: i32,
+    pub mode: i32,
     /// Whether grid values and banking count (not with border mode zero).
-    with_values: bool,
+    pub with_values: bool,
     /// Which end the smoothing base comes from: 0 none, 1 begin, 2 end.
-    smooth_end: u8,
+    pub smooth_end: u8,
     /// The u border offset, when u was outside the data.
-    offset: f64,
+    pub offset: f64,
+    /// d frac / d u: how the grid fraction moves with u (0 where a border mode holds
+    /// it, negative where reflect mirrors it).
+    pub dfrac: f64,
+    /// d (moved u) / d u: -1 where reflect mirrors u, else 1.
+    pub du: f64,
 }
 
 /// Resolves u against the border mode; `None` when the mode refuses.
@@ -117,6 +122,8 @@ fn resolve_u(l: &RefLine, options: &EvalOptions, mut u: f64) -> Option<UPlace> {
     let mut smooth_end = 0u8;
     let mut offset = 0.0;
     let mut index_from_frac = true;
+    let mut dfrac = 1.0 / l.u_inc;
+    let mut du = 1.0;
     if u < l.u_first || u > l.u_last {
         in_core = false;
         mode = options.border_u;
@@ -125,6 +132,7 @@ fn resolve_u(l: &RefLine, options: &EvalOptions, mut u: f64) -> Option<UPlace> {
         match mode {
             NONE => return None,
             EX_KEEP => {
+                dfrac = 0.0;
                 if frac < 0.0 {
                     frac = 0.0;
                     index_from_frac = false;
@@ -138,11 +146,13 @@ fn resolve_u(l: &RefLine, options: &EvalOptions, mut u: f64) -> Option<UPlace> {
                 smooth_end = if frac < 0.0 { 1 } else { 2 };
             }
             REPEAT | REFLECT => {
-                frac = if mode == REPEAT {
-                    repeat(frac, max_frac)
+                if mode == REPEAT {
+                    frac = repeat(frac, max_frac);
                 } else {
-                    reflect(frac, (u - l.u_first) / size, max_frac)
-                };
+                    du = reflect_slope(frac, (u - l.u_first) / size);
+                    dfrac *= du;
+                    frac = reflect(frac, (u - l.u_first) / size, max_frac);
+                }
                 in_core = true;
                 u = l.u_first + frac * l.u_inc;
             }
@@ -150,8 +160,17 @@ fn resolve_u(l: &RefLine, options: &EvalOptions, mut u: f64) -> Option<UPlace> {
         }
         offset = options.offset_u;
     }
-    let index = if index_from_frac { clamp_index(&mut frac, l.n) } else { 0 };
-    Some(UPlace { index, frac, u, in_core, mode, with_values, smooth_end, offset })
+    let index = if index_from_frac {
+        let before = frac;
+        let index = clamp_index(&mut frac, l.n);
+        if !(0.0..=(l.n - 1) as f64).contains(&before) {
+            dfrac = 0.0;
+        }
+        index
+    } else {
+        0
+    };
+    Some(UPlace { index, frac, u, in_core, mode, with_values, smooth_end, offset, dfrac, du })
 }
 
 /// Maps a grid fraction into one period of the data (border mode repeat).
@@ -194,6 +213,18 @@ fn reflect(frac: f64, periods: f64, max_frac: f64) -> f64 {
         max_frac - f
     } else {
         f
+    }
+}
+
+/// How a reflected fraction moves with the original one: +1 or -1 (the sign of the
+/// fraction, mirrored again in every odd period).
+#[inline]
+fn reflect_slope(frac: f64, periods: f64) -> f64 {
+    let sign = if frac < 0.0 { -1.0 } else { 1.0 };
+    if c_abs_is_odd(c_int(periods)) {
+        -sign
+    } else {
+        sign
     }
 }
 
@@ -378,24 +409,41 @@ pub fn uv_to_z(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<f64
     uv_to_z_borders(road, options, u, v)
 }
 
-/// Elevation where a border mode or a smoothing zone applies (kept out of line so
-/// the common case above stays small).
-#[inline(never)]
-fn uv_to_z_borders(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<f64> {
-    let l = &road.line;
-    let g = &road.grid;
-    let u = wrap_closed_u(l, options, u);
-    let ua = resolve_u(l, options, u)?;
-    let (u, mut with_values, mut smooth_end, mut z_offset) = (ua.u, ua.with_values, ua.smooth_end, ua.offset);
-    let with_bank = with_values;
-    let mut v = v;
+/// Where v lies after its border mode is applied.
+pub(crate) struct VPlace {
+    /// Interval index and fraction in the grid.
+    pub index: usize,
+    pub frac: f64,
+    /// d frac / d v (0 where a border mode holds the fraction).
+    pub dfrac: f64,
+    /// v for the banking, moved into the data where the mode moves it.
+    pub v: f64,
+    /// d v / d (original v).
+    pub dv: f64,
+    /// Whether v is inside the data (after moving).
+    pub in_core: bool,
+    /// The border mode that applied (`EX_KEEP` inside).
+    pub mode: i32,
+    /// Whether grid values count (not with border mode zero).
+    pub with_values: bool,
+    /// The v border offset, when v was outside the data.
+    pub offset: f64,
+}
 
+/// Resolves v against the border mode; `None` when the mode refuses.
+#[inline]
+pub(crate) fn resolve_v(g: &crate::grid::Grid, options: &EvalOptions, v: f64) -> Option<VPlace> {
+    let mut v = v;
+    let mut dv = 1.0;
+    let mut with_values = true;
+    let mut offset = 0.0;
     let mut v_in_core = true;
     let mut v_mode = EX_KEEP;
-    let (iv, fv);
+    let (iv, fv, dfrac);
     match g.layout {
         VLayout::Indexed => {
             let mut frac = (v - g.v_first) / g.v_inc;
+            let mut slope = 1.0 / g.v_inc;
             let mut index_from_frac = true;
             if v < g.v_first || v > g.v_last {
                 v_in_core = false;
@@ -407,32 +455,49 @@ fn uv_to_z_borders(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option
                     EX_KEEP if frac < 0.0 => {
                         frac = 0.0;
                         index_from_frac = false;
+                        slope = 0.0;
                     }
                     EX_ZERO => with_values = false,
                     REPEAT | REFLECT => {
-                        frac = if v_mode == REPEAT {
-                            repeat(frac, max_frac)
+                        if v_mode == REPEAT {
+                            frac = repeat(frac, max_frac);
                         } else {
-                            reflect(frac, (v - g.v_first) / size, max_frac)
-                        };
+                            let turn = reflect_slope(frac, (v - g.v_first) / size);
+                            slope *= turn;
+                            dv = turn;
+                            frac = reflect(frac, (v - g.v_first) / size, max_frac);
+                        }
                         v_in_core = true;
                         v = g.v_first + frac * g.v_inc;
                     }
                     _ => {}
                 }
-                z_offset += options.offset_v;
+                offset = options.offset_v;
             }
-            iv = if index_from_frac { clamp_index(&mut frac, g.nv) } else { 0 };
+            iv = if index_from_frac {
+                let before = frac;
+                let index = clamp_index(&mut frac, g.nv);
+                if !(0.0..=(g.nv - 1) as f64).contains(&before) {
+                    slope = 0.0;
+                }
+                index
+            } else {
+                0
+            };
             fv = frac;
+            dfrac = slope;
         }
         VLayout::Explicit => {
             let mut pos = v;
+            let mut dpos = 1.0;
             if pos < g.v_first || pos > g.v_last {
                 v_in_core = false;
                 if (pos - g.v_first).abs() < V_BORDER_SNAP {
                     pos = g.v_first;
+                    dpos = 0.0;
                 } else if (pos - g.v_last).abs() < V_BORDER_SNAP {
                     pos = g.v_last;
+                    dpos = 0.0;
                 } else {
                     v_mode = options.border_v;
                     match v_mode {
@@ -458,19 +523,61 @@ fn uv_to_z_borders(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option
                     if pos > g.v_last {
                         let rem = (pos - g.v_last) % range;
                         let rep = c_int((pos - g.v_last) / range);
-                        pos = if c_abs_is_odd(rep) { g.v_first + rem } else { g.v_last - rem };
+                        (pos, dpos) = if c_abs_is_odd(rep) { (g.v_first + rem, 1.0) } else { (g.v_last - rem, -1.0) };
                     } else if pos < g.v_first {
                         let rem = (pos - g.v_first) % range;
                         let rep = c_int((pos - g.v_first) / range);
-                        pos = if c_abs_is_odd(rep) { g.v_last + rem } else { g.v_first - rem };
+                        (pos, dpos) = if c_abs_is_odd(rep) { (g.v_last + rem, 1.0) } else { (g.v_first - rem, -1.0) };
                     }
                     v_in_core = true;
                 }
-                z_offset += options.offset_v;
+                offset = options.offset_v;
             }
             (iv, fv) = explicit_v(g, pos);
+            let width = g.v[iv + 1] - g.v[iv];
+            let inside = pos >= g.v[iv] && pos <= g.v[iv + 1];
+            dfrac = if inside { dpos / width } else { 0.0 };
         }
     }
+    Some(VPlace { index: iv, frac: fv, dfrac, v, dv, in_core: v_in_core, mode: v_mode, with_values, offset })
+}
+
+/// Elevation where a border mode or a smoothing zone applies (kept out of line so
+/// the common case above stays small).
+#[inline(never)]
+fn uv_to_z_borders(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<f64> {
+    Some(place(road, options, u, v)?.z)
+}
+
+/// An evaluated point: the elevation and what it was made of, for the gradient.
+pub(crate) struct Placed {
+    /// The elevation (smoothing applied).
+    pub z: f64,
+    /// Where u fell (after its border mode).
+    pub(crate) ua: UPlace,
+    /// Where v fell (after its border mode).
+    pub va: VPlace,
+    /// The elevation before smoothing.
+    pub unsmoothed: f64,
+    /// Smoothing: the scale, its base, and d scale / d (moved u); `None` without.
+    pub smooth: Option<(f64, f64, f64)>,
+}
+
+/// Evaluates (u, v) with every border mode and smoothing zone; `None` where a border
+/// mode refuses.
+pub(crate) fn place(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<Placed> {
+    let l = &road.line;
+    let g = &road.grid;
+    let u = wrap_closed_u(l, options, u);
+    let ua = resolve_u(l, options, u)?;
+    let (u, mut with_values, mut smooth_end, mut z_offset) = (ua.u, ua.with_values, ua.smooth_end, ua.offset);
+    let with_bank = with_values;
+
+    let va = resolve_v(g, options, v)?;
+    let (iv, fv, v_in_core, v_mode) = (va.index, va.frac, va.in_core, va.mode);
+    let v = va.v;
+    with_values &= va.with_values;
+    z_offset += va.offset;
 
     let iu = ua.index;
     let vb = if v < g.v_first {
@@ -489,13 +596,13 @@ fn uv_to_z_borders(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option
         if ua.in_core || smooth_end != 0 {
             if let Some(zone) = begin {
                 if u - l.u_first <= zone {
-                    smooth = Some(if u < l.u_first { 0.0 } else { (u - l.u_first) / zone });
+                    smooth = Some(if u < l.u_first { (0.0, 0.0) } else { ((u - l.u_first) / zone, 1.0 / zone) });
                     smooth_end = 1;
                 }
             }
             if let Some(zone) = end {
                 if l.u_last - u <= zone {
-                    smooth = Some(if u > l.u_last { 0.0 } else { (l.u_last - u) / zone });
+                    smooth = Some(if u > l.u_last { (0.0, 0.0) } else { ((l.u_last - u) / zone, -1.0 / zone) });
                     smooth_end = 2;
                 }
             }
@@ -522,10 +629,11 @@ fn uv_to_z_borders(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option
             _ => {}
         }
     }
-    if let Some(scale) = smooth {
+    let unsmoothed = z;
+    if let Some((scale, _)) = smooth {
         z = smooth_base + (z - smooth_base) * scale;
     }
-    Some(z)
+    Some(Placed { z, ua, va, unsmoothed, smooth: smooth.map(|(s, ds)| (s, smooth_base, ds)) })
 }
 
 /// Heading and curvature at (u, v). The heading is that of the reference line

@@ -27,6 +27,7 @@ pub mod grid;
 pub mod header;
 mod memory;
 mod modifiers;
+mod normal;
 pub mod reader;
 pub mod records;
 pub mod refline;
