@@ -7,7 +7,8 @@
  * With THREADS > 1 every figure is also measured on THREADS threads at once, each
  * with a contact point of its own (figure name suffixed _<THREADS>threads).
  * CRG_BENCH_ONLY=uv2z_random,xy2z_path (say) measures only the figures named
- * ("threads" names every multi-thread figure).
+ * ("threads" names every multi-thread figure). CRG_BENCH_PAD (default 0.2) sets how far
+ * beyond the road the x/y box of the xy2uv_box figures reaches, in road sizes.
  * Prints one "name value unit" line per figure.
  */
 #include <pthread.h>
@@ -178,6 +179,24 @@ int main(int argc, char **argv)
     int cp0 = crgContactPointCreate(g_id);
     crgContactPointSetHistory(cp0, 0);
     measure("xy2uv_random_nohistory", q_xy2uv, cp0, g_n / 100, threads, 0);
+    /* x/y anywhere in the road's bounding box grown by a fifth on every side (points
+     * off the road and far from the reference line too), no history */
+    {
+        double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
+        for (long i = 0; i < g_n; i++) {
+            xmin = fmin(xmin, g_x[i]); xmax = fmax(xmax, g_x[i]);
+            ymin = fmin(ymin, g_y[i]); ymax = fmax(ymax, g_y[i]);
+        }
+        double w = xmax - xmin, h = ymax - ymin, pad = (getenv("CRG_BENCH_PAD") ? atof(getenv("CRG_BENCH_PAD")) : 0.2) * fmax(w, h);
+        for (long i = 0; i < g_n; i++) {
+            g_x[i] = xmin - pad + (w + 2 * pad) * rnd();
+            g_y[i] = ymin - pad + (h + 2 * pad) * rnd();
+        }
+        measure("xy2uv_box_nohistory", q_xy2uv, cp0, g_n / 100, threads, 0);
+        /* the same with the default history (50 entries), as a client that never sets it */
+        int cph = crgContactPointCreate(g_id);
+        measure("xy2uv_box_defaulthistory", q_xy2uv, cph, g_n / 100, threads, -1);
+    }
     /* a vehicle path: u increasing, v weaving, x/y looked up with history */
     for (long i = 0; i < g_n; i++) {
         double u = uMin + (uMax - uMin) * i / g_n, v = 0.4 * (vMax - vMin) * sin(i * 1e-3);
