@@ -160,16 +160,7 @@ fn resolve_u(l: &RefLine, options: &EvalOptions, mut u: f64) -> Option<UPlace> {
         }
         offset = options.offset_u;
     }
-    let index = if index_from_frac {
-        let before = frac;
-        let index = clamp_index(&mut frac, l.n);
-        if !(0.0..=(l.n - 1) as f64).contains(&before) {
-            dfrac = 0.0;
-        }
-        index
-    } else {
-        0
-    };
+    let index = if index_from_frac { clamp_index_sloped(&mut frac, l.n, &mut dfrac) } else { 0 };
     Some(UPlace { index, frac, u, in_core, mode, with_values, smooth_end, offset, dfrac, du })
 }
 
@@ -226,6 +217,16 @@ fn reflect_slope(frac: f64, periods: f64) -> f64 {
     } else {
         sign
     }
+}
+
+/// [`clamp_index`], and a slope of 0 where the fraction was clamped (the grid holds
+/// the surface there).
+#[inline]
+fn clamp_index_sloped(frac: &mut f64, n: usize, slope: &mut f64) -> usize {
+    if !(0.0..=(n - 1) as f64).contains(frac) {
+        *slope = 0.0;
+    }
+    clamp_index(frac, n)
 }
 
 /// Splits a non-negative grid fraction into an interval index (at most `n - 2`) and
@@ -474,16 +475,7 @@ pub(crate) fn resolve_v(g: &crate::grid::Grid, options: &EvalOptions, v: f64) ->
                 }
                 offset = options.offset_v;
             }
-            iv = if index_from_frac {
-                let before = frac;
-                let index = clamp_index(&mut frac, g.nv);
-                if !(0.0..=(g.nv - 1) as f64).contains(&before) {
-                    slope = 0.0;
-                }
-                index
-            } else {
-                0
-            };
+            iv = if index_from_frac { clamp_index_sloped(&mut frac, g.nv, &mut slope) } else { 0 };
             fv = frac;
             dfrac = slope;
         }
