@@ -4,7 +4,8 @@
  * the median rate of each and the median of the per-pass ratios.
  *
  * usage: batch_bench FILE N THREADS
- * Prints "call threads classic_q/s batch_q/s ratio" lines.
+ * Prints "call threads classic_q/s batch_q/s ratio" lines; BATCH_ONLY=uv2z (say)
+ * measures that call alone.
  */
 #include <pthread.h>
 #include <stdio.h>
@@ -145,6 +146,8 @@ int main(int argc, char **argv)
     for (int threads = 1; threads <= max_threads; threads *= 2) {
         for (int c = 0; c < CALLS; c++) {
             enum Call call = (enum Call)c;
+            if (getenv("BATCH_ONLY") && strcmp(getenv("BATCH_ONLY"), kNames[c]))
+                continue;
             int xy = call >= XY2UV;
             g_in1 = xy ? x : u;
             g_in2 = xy ? y : v;
