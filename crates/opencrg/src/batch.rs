@@ -35,7 +35,7 @@ fn count(inputs: [&[f64]; 2], outputs: &[&mut [f64]]) -> usize {
 }
 
 impl ContactPoint {
-    /// [`ContactPoint::uv_to_z`] for every (u[i], v[i]) into z[i] (NaN where it fails);
+    /// [`ContactPoint::uv_to_z`] for every (`u[i]`, `v[i]`) into `z[i]` (NaN where it fails);
     /// returns how many succeeded. The shortest slice sets the number of points.
     pub fn uv_to_z_many(&self, u: &[f64], v: &[f64], z: &mut [f64]) -> usize {
         let n = count([u, v], &[&mut *z]);
@@ -52,13 +52,13 @@ impl ContactPoint {
         })
     }
 
-    /// [`ContactPoint::uv_to_xy`] for every point into x[i], y[i].
+    /// [`ContactPoint::uv_to_xy`] for every point into `x[i]`, `y[i]`.
     pub fn uv_to_xy_many(&self, u: &[f64], v: &[f64], x: &mut [f64], y: &mut [f64]) -> usize {
         let n = count([u, v], &[&mut *x, &mut *y]);
         each(n, &mut [x, y], |i| self.uv_to_xy(u[i], v[i]).map(|(a, b)| [a, b]))
     }
 
-    /// [`ContactPoint::uv_to_pk`] for every point into phi[i], curv[i].
+    /// [`ContactPoint::uv_to_pk`] for every point into `phi[i]`, `curv[i]`.
     pub fn uv_to_pk_many(&self, u: &[f64], v: &[f64], phi: &mut [f64], curv: &mut [f64]) -> usize {
         let n = count([u, v], &[&mut *phi, &mut *curv]);
         each(n, &mut [phi, curv], |i| self.uv_to_pk(u[i], v[i]).map(|(a, b)| [a, b]))
