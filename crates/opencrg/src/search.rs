@@ -239,8 +239,18 @@ fn arrange(nodes: &mut [Node]) {
     arrange(&mut right[1..]);
 }
 
+/// Subtrees this small are scanned point by point: cheaper than their box tests.
+const LEAF: usize = 12;
+
 fn search(nodes: &[Node], x: f64, y: f64, best: &mut (f64, usize)) {
-    if nodes.is_empty() {
+    if nodes.len() <= LEAF {
+        for node in nodes {
+            let (dx, dy) = (x - node.x, y - node.y);
+            let d2 = dx * dx + dy * dy;
+            if d2 < best.0 || (d2 == best.0 && node.index < best.1) {
+                *best = (d2, node.index);
+            }
+        }
         return;
     }
     let mid = nodes.len() / 2;
