@@ -106,7 +106,9 @@ pub extern "C" fn crgLoaderReadFile(filename: *const c_char) -> c_int {
                 return 0;
             }
         };
-        match Road::load_with(&path, compat) {
+        // The statistics block costs a scan of the grid: only when it will be printed.
+        let options = opencrg::LoadOptions { compat, report_statistics: msg::level() >= msg::NOTICE };
+        match Road::load_with(&path, options) {
             Ok(mut road) => {
                 // The file's WARN_MSGS counts the messages of its own loading, as the
                 // reference applies it while reading the header.
@@ -344,6 +346,7 @@ pub extern "C" fn crgDataSetOptionSetDefault(dataSetId: c_int) {
 pub extern "C" fn crgDataSetModifiersApply(dataSetId: c_int) {
     guard("crgDataSetModifiersApply", (), || {
         let events = on_road_mut("crgDataSetModifiersApply", dataSetId, |r| {
+            r.set_report_statistics(msg::level() >= msg::NOTICE);
             r.apply_modifiers();
             r.take_events()
         });

@@ -42,7 +42,7 @@ pub use compat::{Compat, UnknownCompat};
 pub use contact::ContactPoint;
 pub use error::{Error, Location, Result};
 pub use header::DataFormat;
-pub use road::Road;
+pub use road::{LoadOptions, Road};
 pub use settings::{Settings, Value};
 pub use writer::write;
 

@@ -28,8 +28,27 @@ pub struct Road {
     pub(crate) prefetch: crate::eval::PrefetchHint,
     /// The reference behaviour the road follows.
     pub(crate) compat: Compat,
+    /// Whether each preparation reports the road's statistics (a scan of the grid).
+    report_statistics: bool,
     /// Events not yet taken by [`Road::take_events`].
     pub(crate) events: Vec<crate::report::Event>,
+}
+
+/// How a road is loaded.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct LoadOptions {
+    /// The reference behaviour to follow.
+    pub compat: Compat,
+    /// Whether every preparation of the road (after loading, after modifiers that change
+    /// its data) reports its statistics as an [`Event::Prepared`](crate::report::Event):
+    /// a scan of the whole grid, so off unless someone reads them.
+    pub report_statistics: bool,
+}
+
+impl From<Compat> for LoadOptions {
+    fn from(compat: Compat) -> Self {
+        LoadOptions { compat, ..LoadOptions::default() }
+    }
 }
 
 /// Largest road accepted, in grid cells (guards against headers declaring absurd sizes).
@@ -42,11 +61,11 @@ impl Road {
     /// defaults) are not applied yet: call [`Road::apply_modifiers`] for that, as the
     /// classic API's `crgDataSetModifiersApply` does.
     pub fn load(path: impl AsRef<Path>) -> Result<Road> {
-        Road::load_with(path, Compat::default())
+        Road::load_with(path, LoadOptions::default())
     }
 
-    /// [`Road::load`] following the given reference behaviour.
-    pub fn load_with(path: impl AsRef<Path>, compat: Compat) -> Result<Road> {
+    /// [`Road::load`] with options (a [`Compat`] alone will do).
+    pub fn load_with(path: impl AsRef<Path>, options: impl Into<LoadOptions>) -> Result<Road> {
         let path = path.as_ref();
         let (header, data) = reader::read(path)?;
         let data = data.ok_or_else(|| {
@@ -57,17 +76,17 @@ impl Road {
                 "no data section ($$$$ line) in the file or the files it references",
             )
         })?;
-        Road::build(header, data, compat)
+        Road::build(header, data, options.into())
     }
 
     /// Reads a CRG file held in memory. `name` stands for the file in messages;
     /// relative file references are looked up in the working folder and beside `name`.
     pub fn from_bytes(bytes: Vec<u8>, name: impl AsRef<Path>) -> Result<Road> {
-        Road::from_bytes_with(bytes, name, Compat::default())
+        Road::from_bytes_with(bytes, name, LoadOptions::default())
     }
 
-    /// [`Road::from_bytes`] following the given reference behaviour.
-    pub fn from_bytes_with(bytes: Vec<u8>, name: impl AsRef<Path>, compat: Compat) -> Result<Road> {
+    /// [`Road::from_bytes`] with options (a [`Compat`] alone will do).
+    pub fn from_bytes_with(bytes: Vec<u8>, name: impl AsRef<Path>, options: impl Into<LoadOptions>) -> Result<Road> {
         let name = name.as_ref();
         let (header, data) = reader::read_bytes(bytes, name)?;
         let data = data.ok_or_else(|| {
@@ -78,10 +97,10 @@ impl Road {
                 "no data section ($$$$ line) in the file or the files it references",
             )
         })?;
-        Road::build(header, data, compat)
+        Road::build(header, data, options.into())
     }
 
-    fn build(header: Header, data: DataSource, compat: Compat) -> Result<Road> {
+    fn build(header: Header, data: DataSource, load: LoadOptions) -> Result<Road> {
         let path = data.path.clone();
         let err = |field: &str, msg: String| Error::format(&path, Location::File, field, msg);
         let p = &header.road;
@@ -261,7 +280,8 @@ impl Road {
             modifiers,
             index: SampleIndex::default(),
             prefetch: Default::default(),
-            compat,
+            compat: load.compat,
+            report_statistics: load.report_statistics,
             events: Vec::new(),
         };
         let imported: Vec<_> = road.header.references.clone();
@@ -283,14 +303,22 @@ impl Road {
             self.note(Event::LineZFromSlope);
         }
         self.grid.fold_mean();
-        let statistics = self.statistics();
-        self.note(Event::Prepared(Box::new(statistics)));
+        if self.report_statistics {
+            let statistics = self.statistics();
+            self.note(Event::Prepared(Box::new(statistics)));
+        }
         self.line.update_utility();
         self.note(Event::ClosedTrack(self.line.closed));
         self.grid.build_v_table();
         self.line.update_caches();
         self.index = SampleIndex::build(&self.line);
         self.prefetch = crate::eval::PrefetchHint::new(&self.line, &self.grid);
+    }
+
+    /// Whether later preparations (by modifiers) report the road's statistics; see
+    /// [`LoadOptions::report_statistics`].
+    pub fn set_report_statistics(&mut self, on: bool) {
+        self.report_statistics = on;
     }
 
     /// The reference behaviour the road follows.
