@@ -47,7 +47,7 @@ fn settings_text(s: &Settings) -> String {
     }
 }
 
-/// The facts `info` reports, as JSON (the text form is made from the same object).
+/// The facts `info` reports, as JSON.
 pub fn facts(road: &Road, path: &str) -> Json {
     let h = road.header();
     let g = road.grid();
@@ -82,16 +82,16 @@ pub fn facts(road: &Road, path: &str) -> Json {
 
 /// The facts as lines of text.
 pub fn text(road: &Road, path: &str) -> String {
-    let f = facts(road, path);
-    let n = |v: &Json| v.as_f64().map_or("?".to_string(), |x| format!("{x}"));
+    let h = road.header();
+    let g = road.grid();
+    let s = road.statistics();
+    let ((u0, u1), (v0, v1), (du, dv)) = (road.u_range(), road.v_range(), road.increments());
     let mut out = String::new();
     let mut line = |k: &str, v: String| out.push_str(&format!("{k:<15}{v}\n"));
-    line("file", format!("{} ({})", path, f["format"].as_str().unwrap_or("?")));
-    let refs = road.header().references.iter().map(|p| p.display().to_string()).collect::<Vec<_>>();
-    if !refs.is_empty() {
-        line("references", refs.join(", "));
+    line("file", format!("{path} ({})", road.format().name()));
+    if !h.references.is_empty() {
+        line("references", h.references.iter().map(|p| p.display().to_string()).collect::<Vec<_>>().join(", "));
     }
-    let g = road.grid();
     line(
         "size",
         format!(
@@ -99,40 +99,23 @@ pub fn text(road: &Road, path: &str) -> String {
             g.nu,
             g.nv,
             g.nu * g.nv,
-            road.header().channels.len()
+            h.channels.len()
         ),
     );
-    let other: Vec<String> = road
-        .header()
+    let other: Vec<String> = h
         .channels
         .iter()
         .filter(|c| !matches!(c, Channel::SectionAt(_) | Channel::SectionIndex(_)))
         .map(channel_name)
         .collect();
     line("line channels", if other.is_empty() { "none".into() } else { other.join(", ") });
-    line("u", format!("{} .. {} m, increment {} m", n(&f["u"]["first"]), n(&f["u"]["last"]), n(&f["u"]["increment"])));
-    line("v", format!("{} .. {} m, increment {} m", n(&f["v"]["right"]), n(&f["v"]["left"]), n(&f["v"]["increment"])));
-    let r = &f["reference_line"];
-    line(
-        "start",
-        format!(
-            "x {:.4} m, y {:.4} m, heading {:.4} rad",
-            r["start"]["x"].as_f64().unwrap_or(0.0),
-            r["start"]["y"].as_f64().unwrap_or(0.0),
-            r["start"]["heading"].as_f64().unwrap_or(0.0)
-        ),
-    );
-    line(
-        "end",
-        format!(
-            "x {:.4} m, y {:.4} m, heading {:.4} rad",
-            r["end"]["x"].as_f64().unwrap_or(0.0),
-            r["end"]["y"].as_f64().unwrap_or(0.0),
-            r["end"]["heading"].as_f64().unwrap_or(0.0)
-        ),
-    );
-    line("length", format!("{} m", n(&r["length"])));
-    line("line z", format!("{:.4} .. {:.4} m", r["z"][0].as_f64().unwrap_or(0.0), r["z"][1].as_f64().unwrap_or(0.0)));
+    line("u", format!("{u0} .. {u1} m, increment {du} m"));
+    line("v", format!("{v0} .. {v1} m, increment {dv} m"));
+    let point = |(x, y, heading): (f64, f64, f64)| format!("x {x:.4} m, y {y:.4} m, heading {heading:.4} rad");
+    line("start", point(s.start));
+    line("end", point(s.end));
+    line("length", format!("{} m", u1 - u0));
+    line("line z", format!("{:.4} .. {:.4} m", s.z_line.0, s.z_line.1));
     line(
         "closed",
         match road.closed_track() {
@@ -140,9 +123,8 @@ pub fn text(road: &Road, path: &str) -> String {
             None => "no".into(),
         },
     );
-    let e = &f["elevation"];
-    line("elevation", format!("{:.4} .. {:.4} m", e["min"].as_f64().unwrap_or(0.0), e["max"].as_f64().unwrap_or(0.0)));
-    line("NaN cells", format!("{}", f["nan_cells"]));
+    line("elevation", format!("{:.4} .. {:.4} m", s.z_min, s.z_max));
+    line("NaN cells", format!("{}", g.z.iter().filter(|z| z.is_nan()).count()));
     line("options", settings_text(road.options()));
     line("modifiers", settings_text(road.modifiers()));
     for w in road.warnings() {

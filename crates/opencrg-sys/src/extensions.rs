@@ -47,13 +47,12 @@ fn batch<const K: usize>(
     let Ok(n) = usize::try_from(n) else { return 0 };
     // SAFETY: the C caller gives `n` values behind every pointer (the functions' contract).
     let (Some(a), Some(b)) = (unsafe { input(inputs[0], n) }, unsafe { input(inputs[1], n) }) else { return 0 };
-    let mut outs = Vec::with_capacity(K);
-    for p in outputs {
-        // SAFETY: as above, for the outputs.
-        let Some(o) = (unsafe { output(p, n) }) else { return 0 };
-        outs.push(o);
+    // SAFETY: as above, for the outputs.
+    let outs = outputs.map(|p| unsafe { output(p, n) });
+    if outs.iter().any(Option::is_none) {
+        return 0;
     }
-    let Ok(outs) = <[&mut [f64]; K]>::try_from(outs) else { return 0 };
+    let outs = outs.map(Option::unwrap_or_default);
     cp_call(func, cp_id, 0, |cp| c_int::try_from(f(cp, [a, b], outs)).unwrap_or(c_int::MAX))
 }
 

