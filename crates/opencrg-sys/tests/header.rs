@@ -26,3 +26,32 @@ fn header_is_current() {
         "include/crgBaseLib.h is stale: run OPENCRG_BLESS=1 cargo test -p opencrg-sys --test header"
     );
 }
+
+/// `#define NAME VALUE` lines of the header whose name starts with `prefix`.
+fn defines(header: &str, prefix: &str) -> Vec<(String, String)> {
+    header
+        .lines()
+        .filter_map(|l| {
+            let mut words = l.strip_prefix("#define ")?.split_whitespace();
+            let name = words.next()?;
+            let value = words.next()?;
+            name.starts_with(prefix).then(|| (name.to_string(), value.to_string()))
+        })
+        .collect()
+}
+
+#[test]
+fn setting_constants_match_the_settings_table() {
+    let crate_dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let header = std::fs::read_to_string(crate_dir.join("../../include/crgBaseLib.h")).unwrap();
+    let mut in_header: Vec<(String, String)> = defines(&header, "dCrgCpOption");
+    in_header.extend(defines(&header, "dCrgMod"));
+    assert_eq!(in_header.len(), opencrg::settings::SETTINGS.len(), "one constant per setting");
+    for row in opencrg::settings::SETTINGS {
+        let found = in_header.iter().find(|(name, _)| name == row.c_constant);
+        let Some((_, value)) = found else { panic!("{} is not in crgBaseLib.h", row.c_constant) };
+        assert_eq!(value, &row.id.to_string(), "{}", row.c_constant);
+    }
+    let size = defines(&header, "dCrgSizeOptList");
+    assert_eq!(size, [("dCrgSizeOptList".to_string(), (opencrg::settings::TABLE_SIZE - 1).to_string())]);
+}

@@ -7,7 +7,7 @@
 
 use crate::error::{Error, Location, Result};
 use crate::header::{self, key_value, lookup, parse_f64_prefix, parse_i32_prefix, Channel, DataFormat, Section, Tag};
-use crate::settings::{m, opt, Settings};
+use crate::settings::{self, Accepts, Family, Settings};
 use std::path::{Path, PathBuf};
 
 /// Deepest chain of file references followed.
@@ -142,70 +142,17 @@ impl RoadParams {
     }
 }
 
-/// What the option keywords of `$ROAD_CRG_OPTS` map to.
-#[derive(Clone, Copy)]
-enum OptKey {
-    Mode(u32, i32),
-    Double(u32),
-    Flag(u32),
-    WarnMsgs,
-    Ignored,
-}
-
-const OPTION_KEYS: [(&str, OptKey); 26] = [
-    ("border_mode_u", OptKey::Mode(opt::BORDER_MODE_U, 4)),
-    ("border_mode_v", OptKey::Mode(opt::BORDER_MODE_V, 4)),
-    ("border_offset_u", OptKey::Double(opt::BORDER_OFFSET_U)),
-    ("border_offset_v", OptKey::Double(opt::BORDER_OFFSET_V)),
-    ("border_smooth_ubeg", OptKey::Double(opt::SMOOTH_U_BEGIN)),
-    ("border_smooth_uend", OptKey::Double(opt::SMOOTH_U_END)),
-    ("refline_continuation", OptKey::Mode(opt::REFLINE_CONTINUE, 1)),
-    ("refline_search_far", OptKey::Double(opt::REFLINE_FAR)),
-    ("refline_search_close", OptKey::Double(opt::REFLINE_CLOSE)),
-    ("refline_search_u", OptKey::Double(opt::REFLINE_SEARCH_U)),
-    ("refline_search_ufrac", OptKey::Double(opt::REFLINE_SEARCH_U_FRAC)),
-    ("warn_msgs", OptKey::WarnMsgs),
-    ("warn_curv_local", OptKey::Flag(opt::WARN_CURV_LOCAL)),
-    ("warn_curv_global", OptKey::Flag(opt::WARN_CURV_GLOBAL)),
-    ("check_eps", OptKey::Double(opt::CHECK_EPS)),
-    ("check_inc", OptKey::Double(opt::CHECK_INC)),
-    ("check_tol", OptKey::Double(opt::CHECK_TOL)),
-    ("check_pro", OptKey::Ignored),
-    ("check_wgs", OptKey::Ignored),
-    ("log_msgs", OptKey::Ignored),
-    ("log_eval", OptKey::Ignored),
-    ("log_eval_freq", OptKey::Ignored),
-    ("log_hist", OptKey::Ignored),
-    ("log_hist_freq", OptKey::Ignored),
-    ("log_stat", OptKey::Ignored),
-    ("log_stat_freq", OptKey::Ignored),
-];
-
-const MODIFIER_KEYS: [(&str, OptKey); 24] = [
-    ("scale_z_grid", OptKey::Double(m::SCALE_Z)),
-    ("scale_slope", OptKey::Double(m::SCALE_SLOPE)),
-    ("scale_banking", OptKey::Double(m::SCALE_BANK)),
-    ("scale_length", OptKey::Double(m::SCALE_LENGTH)),
-    ("scale_width", OptKey::Double(m::SCALE_WIDTH)),
-    ("scale_curvature", OptKey::Double(m::SCALE_CURVATURE)),
-    ("grid_nan_mode", OptKey::Mode(m::GRID_NAN_MODE, 2)),
-    ("grid_nan_offset", OptKey::Double(m::GRID_NAN_OFFSET)),
-    ("refline_rotcenter_x", OptKey::Double(m::REFLINE_ROTCENTER_X)),
-    ("refline_rotcenter_y", OptKey::Double(m::REFLINE_ROTCENTER_Y)),
-    ("refline_offset_phi", OptKey::Double(m::REFLINE_OFFSET_PHI)),
-    ("refline_offset_x", OptKey::Double(m::REFLINE_OFFSET_X)),
-    ("refline_offset_y", OptKey::Double(m::REFLINE_OFFSET_Y)),
-    ("refline_offset_z", OptKey::Double(m::REFLINE_OFFSET_Z)),
-    ("refpoint_u_fraction", OptKey::Double(m::REFPOINT_U_FRAC)),
-    ("refpoint_u_offset", OptKey::Double(m::REFPOINT_U_OFFSET)),
-    ("refpoint_u", OptKey::Double(m::REFPOINT_U)),
-    ("refpoint_v_fraction", OptKey::Double(m::REFPOINT_V_FRAC)),
-    ("refpoint_v_offset", OptKey::Double(m::REFPOINT_V_OFFSET)),
-    ("refpoint_v", OptKey::Double(m::REFPOINT_V)),
-    ("refpoint_x", OptKey::Double(m::REFPOINT_X)),
-    ("refpoint_y", OptKey::Double(m::REFPOINT_Y)),
-    ("refpoint_z", OptKey::Double(m::REFPOINT_Z)),
-    ("refpoint_phi", OptKey::Double(m::REFPOINT_PHI)),
+/// Keywords of `$ROAD_CRG_OPTS` that the reference reads but that change nothing here.
+const IGNORED_OPTION_KEYWORDS: [&str; 9] = [
+    "check_pro",
+    "check_wgs",
+    "log_msgs",
+    "log_eval",
+    "log_eval_freq",
+    "log_hist",
+    "log_hist_freq",
+    "log_stat",
+    "log_stat_freq",
 ];
 
 /// The bytes of a file: memory-mapped when possible.
@@ -516,9 +463,9 @@ impl Loader {
     /// A line of `$ROAD_CRG_OPTS` or `$ROAD_CRG_MODS`. Only the top file, or the first
     /// referenced file that has the section, sets them.
     fn setting_line(&mut self, section: Section, path: &Path, number: usize, text: &str, level: usize) -> Result<()> {
-        let (keys, claimed, name): (&[(&str, OptKey)], _, _) = match section {
-            Section::Options => (&OPTION_KEYS, self.option_level, "$ROAD_CRG_OPTS"),
-            _ => (&MODIFIER_KEYS, self.modifier_level, "$ROAD_CRG_MODS"),
+        let (family, claimed, name) = match section {
+            Section::Options => (Family::Option, self.option_level, "$ROAD_CRG_OPTS"),
+            _ => (Family::Modifier, self.modifier_level, "$ROAD_CRG_MODS"),
         };
         if !(level == 0 || claimed == Some(level)) {
             return Ok(());
@@ -526,35 +473,38 @@ impl Loader {
         let Some((key, value)) = key_value(text) else { return Ok(()) };
         let field = key.to_ascii_uppercase();
         let at = format!("{}:{number}: {field}", path.display());
-        let Some((_, k)) = lookup(keys, &key) else {
+        let Some(setting) = settings::by_keyword(family, &key) else {
+            if family == Family::Option && IGNORED_OPTION_KEYWORDS.contains(&key.as_str()) {
+                return Ok(());
+            }
             self.header.warnings.push(format!("{at}: unknown keyword in {name}, ignored"));
             return Ok(());
         };
-        let target = match section {
-            Section::Options => &mut self.header.options,
-            _ => &mut self.header.modifiers,
+        let target = match family {
+            Family::Option => &mut self.header.options,
+            Family::Modifier => &mut self.header.modifiers,
         };
-        let warning = match k {
-            OptKey::Mode(id, max) => match parse_i32_prefix(value).filter(|v| (0..=max).contains(v)) {
+        let id = setting.id;
+        let warning = match setting.accepts {
+            Accepts::Choice { max } => match parse_i32_prefix(value).filter(|v| (0..=max).contains(v)) {
                 Some(v) => target.set_int(id, v).err().map(|e| format!("{at}: {e}")),
                 None => Some(format!("{at}: value '{}' is not one of 0..{max}; ignored", value.trim())),
             },
-            OptKey::Flag(id) => {
+            Accepts::Flag => {
                 // The reference sets these checks only for the value 1, and stores the option's id.
                 if parse_i32_prefix(value) == Some(1) {
                     target.set_int(id, id as i32)?;
                 }
                 None
             }
-            OptKey::Double(id) => {
-                let v = finite_value(path, number, &field, value)?;
-                target.set_double(id, v).err().map(|e| format!("{at}: {e}"))
-            }
-            OptKey::WarnMsgs => {
+            Accepts::Count => {
                 self.header.warn_msgs = parse_i32_prefix(value);
                 None
             }
-            OptKey::Ignored => None,
+            Accepts::Any | Accepts::Positive => {
+                let v = finite_value(path, number, &field, value)?;
+                target.set_double(id, v).err().map(|e| format!("{at}: {e}"))
+            }
         };
         self.header.warnings.extend(warning);
         Ok(())

@@ -144,72 +144,140 @@ pub enum Family {
     Modifier,
 }
 
+/// Which values a setting accepts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Accepts {
+    /// Any number.
+    Any,
+    /// A choice among `0..=max`.
+    Choice {
+        /// The largest choice.
+        max: i32,
+    },
+    /// A number greater than zero.
+    Positive,
+    /// A check switched on by the value 1 in a file (stored as the setting's identifier).
+    Flag,
+    /// A count of messages (read from a file into the header, not into the options).
+    Count,
+}
+
+/// Everything known about one option or modifier: the one table the reader, the
+/// writer, the printers and the C constants are served from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SettingInfo {
+    /// The identifier (value of the classic C constant).
+    pub id: u32,
+    /// Option or modifier.
+    pub family: Family,
+    /// Integer or double.
+    pub kind: Kind,
+    /// The keyword in `$ROAD_CRG_OPTS` / `$ROAD_CRG_MODS` (upper case; read in any case).
+    pub keyword: Option<&'static str>,
+    /// The name printed in messages and printouts.
+    pub name: &'static str,
+    /// The classic C API's constant.
+    pub c_constant: &'static str,
+    /// The value [`Settings::default_options`] / [`Settings::default_modifiers`] set.
+    pub default: Option<Value>,
+    /// Which values are accepted.
+    pub accepts: Accepts,
+}
+
+const fn row(
+    id: u32,
+    family: Family,
+    kind: Kind,
+    keyword: Option<&'static str>,
+    name: &'static str,
+    c_constant: &'static str,
+    default: Option<Value>,
+    accepts: Accepts,
+) -> SettingInfo {
+    SettingInfo { id, family, kind, keyword, name, c_constant, default, accepts }
+}
+
+use Accepts::{Any, Choice, Count, Flag, Positive};
+use Family::{Modifier as M, Option as O};
+use Kind::{Double as D, Int as I};
+
+/// Every option and modifier, in identifier order.
+#[rustfmt::skip]
+pub const SETTINGS: [SettingInfo; 42] = [
+    row(opt::BORDER_MODE_U, O, I, Some("BORDER_MODE_U"), "border mode u", "dCrgCpOptionBorderModeU", Some(Value::Int(2)), Choice { max: 4 }),
+    row(opt::BORDER_MODE_V, O, I, Some("BORDER_MODE_V"), "border mode v", "dCrgCpOptionBorderModeV", Some(Value::Int(2)), Choice { max: 4 }),
+    row(opt::CURV_MODE, O, I, None, "curvature evaluation mode", "dCrgCpOptionCurvMode", Some(Value::Int(0)), Choice { max: 1 }),
+    row(opt::BORDER_OFFSET_U, O, D, Some("BORDER_OFFSET_U"), "offset at u border", "dCrgCpOptionBorderOffsetU", None, Any),
+    row(opt::BORDER_OFFSET_V, O, D, Some("BORDER_OFFSET_V"), "offset at v border", "dCrgCpOptionBorderOffsetV", None, Any),
+    row(opt::SMOOTH_U_BEGIN, O, D, Some("BORDER_SMOOTH_UBEG"), "smoothing zone at begin", "dCrgCpOptionSmoothUBegin", None, Positive),
+    row(opt::SMOOTH_U_END, O, D, Some("BORDER_SMOOTH_UEND"), "smoothing zone at end", "dCrgCpOptionSmoothUEnd", None, Positive),
+    row(opt::REFLINE_SEARCH_U, O, D, Some("REFLINE_SEARCH_U"), "refline search value u", "dCrgCpOptionRefLineSearchU", None, Any),
+    row(opt::REFLINE_SEARCH_U_FRAC, O, D, Some("REFLINE_SEARCH_UFRAC"), "refline search value uFrac", "dCrgCpOptionRefLineSearchUFrac", None, Any),
+    row(opt::REFLINE_CLOSE, O, D, Some("REFLINE_SEARCH_CLOSE"), "refline search close criteria", "dCrgCpOptionRefLineClose", None, Any),
+    row(opt::REFLINE_FAR, O, D, Some("REFLINE_SEARCH_FAR"), "refline search far criteria", "dCrgCpOptionRefLineFar", None, Any),
+    row(opt::REFLINE_CONTINUE, O, I, Some("REFLINE_CONTINUATION"), "refline continuation mode", "dCrgCpOptionRefLineContinue", None, Choice { max: 1 }),
+    row(opt::WARN_MSGS, O, I, Some("WARN_MSGS"), "maximum number of warning messages", "dCrgCpOptionWarnMsgs", None, Count),
+    row(opt::CHECK_EPS, O, D, Some("CHECK_EPS"), "expected min. accuracy", "dCrgCpOptionCheckEps", Some(Value::Double(1e-6)), Any),
+    row(opt::CHECK_INC, O, D, Some("CHECK_INC"), "expected min. increment", "dCrgCpOptionCheckInc", Some(Value::Double(1e-3)), Any),
+    row(opt::CHECK_TOL, O, D, Some("CHECK_TOL"), "expected abs. tolerance", "dCrgCpOptionCheckTol", Some(Value::Double(1e-4)), Any),
+    row(opt::WARN_CURV_LOCAL, O, I, Some("WARN_CURV_LOCAL"), "local curvature check", "dCrgCpOptionWarnCurvLocal", None, Flag),
+    row(opt::WARN_CURV_GLOBAL, O, I, Some("WARN_CURV_GLOBAL"), "global curvature check", "dCrgCpOptionWarnCurvGlobal", None, Flag),
+    row(m::SCALE_Z, M, D, Some("SCALE_Z_GRID"), "modifier z scale", "dCrgModScaleZ", None, Any),
+    row(m::SCALE_SLOPE, M, D, Some("SCALE_SLOPE"), "modifier slope scale", "dCrgModScaleSlope", None, Any),
+    row(m::SCALE_BANK, M, D, Some("SCALE_BANKING"), "modifier bank scale", "dCrgModScaleBank", None, Any),
+    row(m::SCALE_LENGTH, M, D, Some("SCALE_LENGTH"), "modifier length scale", "dCrgModScaleLength", None, Any),
+    row(m::SCALE_WIDTH, M, D, Some("SCALE_WIDTH"), "modifier width scale", "dCrgModScaleWidth", None, Any),
+    row(m::SCALE_CURVATURE, M, D, Some("SCALE_CURVATURE"), "modifier curvature scale", "dCrgModScaleCurvature", None, Any),
+    row(m::GRID_NAN_MODE, M, I, Some("GRID_NAN_MODE"), "modifier grid NaN mode", "dCrgModGridNaNMode", Some(Value::Int(2)), Choice { max: 2 }),
+    row(m::GRID_NAN_OFFSET, M, D, Some("GRID_NAN_OFFSET"), "modifier grid NaN offset", "dCrgModGridNaNOffset", None, Any),
+    row(m::REFPOINT_V, M, D, Some("REFPOINT_V"), "modifier reference point v", "dCrgModRefPointV", None, Any),
+    row(m::REFPOINT_V_FRAC, M, D, Some("REFPOINT_V_FRACTION"), "modifier reference point v fraction", "dCrgModRefPointVFrac", None, Any),
+    row(m::REFPOINT_V_OFFSET, M, D, Some("REFPOINT_V_OFFSET"), "modifier reference point v offset", "dCrgModRefPointVOffset", None, Any),
+    row(m::REFPOINT_U, M, D, Some("REFPOINT_U"), "modifier reference point u", "dCrgModRefPointU", None, Any),
+    row(m::REFPOINT_U_FRAC, M, D, Some("REFPOINT_U_FRACTION"), "modifier reference point u fraction", "dCrgModRefPointUFrac", None, Any),
+    row(m::REFPOINT_U_OFFSET, M, D, Some("REFPOINT_U_OFFSET"), "modifier reference point u offset", "dCrgModRefPointUOffset", None, Any),
+    row(m::REFPOINT_X, M, D, Some("REFPOINT_X"), "reference point x", "dCrgModRefPointX", Some(Value::Double(0.0)), Any),
+    row(m::REFPOINT_Y, M, D, Some("REFPOINT_Y"), "reference point y", "dCrgModRefPointY", Some(Value::Double(0.0)), Any),
+    row(m::REFPOINT_Z, M, D, Some("REFPOINT_Z"), "reference point z", "dCrgModRefPointZ", Some(Value::Double(0.0)), Any),
+    row(m::REFPOINT_PHI, M, D, Some("REFPOINT_PHI"), "reference point phi", "dCrgModRefPointPhi", Some(Value::Double(0.0)), Any),
+    row(m::REFLINE_OFFSET_X, M, D, Some("REFLINE_OFFSET_X"), "modifier reference line offset x", "dCrgModRefLineOffsetX", None, Any),
+    row(m::REFLINE_OFFSET_Y, M, D, Some("REFLINE_OFFSET_Y"), "modifier reference line offset y", "dCrgModRefLineOffsetY", None, Any),
+    row(m::REFLINE_OFFSET_Z, M, D, Some("REFLINE_OFFSET_Z"), "modifier reference line offset z", "dCrgModRefLineOffsetZ", None, Any),
+    row(m::REFLINE_OFFSET_PHI, M, D, Some("REFLINE_OFFSET_PHI"), "modifier reference line offset phi", "dCrgModRefLineOffsetPhi", None, Any),
+    row(m::REFLINE_ROTCENTER_X, M, D, Some("REFLINE_ROTCENTER_X"), "modifier reference line rotation center x", "dCrgModRefLineRotCenterX", None, Any),
+    row(m::REFLINE_ROTCENTER_Y, M, D, Some("REFLINE_ROTCENTER_Y"), "modifier reference line rotation center y", "dCrgModRefLineRotCenterY", None, Any),
+];
+
+/// Row of each identifier in [`SETTINGS`] (`u8::MAX`: no setting).
+const ROW_OF: [u8; TABLE_SIZE] = {
+    let mut rows = [u8::MAX; TABLE_SIZE];
+    let mut i = 0;
+    while i < SETTINGS.len() {
+        rows[SETTINGS[i].id as usize] = i as u8;
+        i += 1;
+    }
+    rows
+};
+
+/// The table row of an identifier; `None` for unknown identifiers.
+pub fn info(id: u32) -> Option<&'static SettingInfo> {
+    let row = *ROW_OF.get(id as usize)?;
+    SETTINGS.get(row as usize)
+}
+
+/// The setting of a family with this file keyword (any case).
+pub fn by_keyword(family: Family, keyword: &str) -> Option<&'static SettingInfo> {
+    SETTINGS.iter().find(|s| s.family == family && s.keyword.is_some_and(|k| k.eq_ignore_ascii_case(keyword)))
+}
+
 /// Family and type of a known identifier; `None` for unknown identifiers.
 pub fn describe(id: u32) -> Option<(Family, Kind)> {
-    use Family::*;
-    use Kind::*;
-    Some(match id {
-        opt::BORDER_MODE_U
-        | opt::BORDER_MODE_V
-        | opt::CURV_MODE
-        | opt::REFLINE_CONTINUE
-        | opt::WARN_MSGS
-        | opt::WARN_CURV_LOCAL
-        | opt::WARN_CURV_GLOBAL => (Option, Int),
-        opt::BORDER_OFFSET_U..=opt::REFLINE_FAR | opt::CHECK_EPS..=opt::CHECK_TOL => (Option, Double),
-        m::GRID_NAN_MODE => (Modifier, Int),
-        m::SCALE_Z..=m::REFLINE_ROTCENTER_Y => (Modifier, Double),
-        _ => return None,
-    })
+    info(id).map(|s| (s.family, s.kind))
 }
 
 /// A short human-readable name of a setting, used in messages and printouts.
 pub fn name(id: u32) -> &'static str {
-    match id {
-        opt::BORDER_MODE_U => "border mode u",
-        opt::BORDER_MODE_V => "border mode v",
-        opt::CURV_MODE => "curvature evaluation mode",
-        opt::BORDER_OFFSET_U => "offset at u border",
-        opt::BORDER_OFFSET_V => "offset at v border",
-        opt::SMOOTH_U_BEGIN => "smoothing zone at begin",
-        opt::SMOOTH_U_END => "smoothing zone at end",
-        opt::REFLINE_SEARCH_U => "refline search value u",
-        opt::REFLINE_SEARCH_U_FRAC => "refline search value uFrac",
-        opt::REFLINE_CLOSE => "refline search close criteria",
-        opt::REFLINE_FAR => "refline search far criteria",
-        opt::REFLINE_CONTINUE => "refline continuation mode",
-        opt::WARN_MSGS => "maximum number of warning messages",
-        opt::CHECK_EPS => "expected min. accuracy",
-        opt::CHECK_INC => "expected min. increment",
-        opt::CHECK_TOL => "expected abs. tolerance",
-        opt::WARN_CURV_LOCAL => "local curvature check",
-        opt::WARN_CURV_GLOBAL => "global curvature check",
-        m::SCALE_Z => "modifier z scale",
-        m::SCALE_SLOPE => "modifier slope scale",
-        m::SCALE_BANK => "modifier bank scale",
-        m::SCALE_LENGTH => "modifier length scale",
-        m::SCALE_WIDTH => "modifier width scale",
-        m::SCALE_CURVATURE => "modifier curvature scale",
-        m::GRID_NAN_MODE => "modifier grid NaN mode",
-        m::GRID_NAN_OFFSET => "modifier grid NaN offset",
-        m::REFPOINT_V => "modifier reference point v",
-        m::REFPOINT_V_FRAC => "modifier reference point v fraction",
-        m::REFPOINT_V_OFFSET => "modifier reference point v offset",
-        m::REFPOINT_U => "modifier reference point u",
-        m::REFPOINT_U_FRAC => "modifier reference point u fraction",
-        m::REFPOINT_U_OFFSET => "modifier reference point u offset",
-        m::REFPOINT_X => "reference point x",
-        m::REFPOINT_Y => "reference point y",
-        m::REFPOINT_Z => "reference point z",
-        m::REFPOINT_PHI => "reference point phi",
-        m::REFLINE_OFFSET_X => "modifier reference line offset x",
-        m::REFLINE_OFFSET_Y => "modifier reference line offset y",
-        m::REFLINE_OFFSET_Z => "modifier reference line offset z",
-        m::REFLINE_OFFSET_PHI => "modifier reference line offset phi",
-        m::REFLINE_ROTCENTER_X => "modifier reference line rotation center x",
-        m::REFLINE_ROTCENTER_Y => "modifier reference line rotation center y",
-        _ => "unknown",
-    }
+    info(id).map_or("unknown", |s| s.name)
 }
 
 /// The value of one setting.
@@ -286,21 +354,18 @@ impl Settings {
 
     /// Replaces every option by the defaults.
     pub fn reset_options(&mut self) {
-        self.clear();
-        self.slots[opt::CURV_MODE as usize] = Some(Value::Int(0));
-        self.slots[opt::BORDER_MODE_U as usize] = Some(Value::Int(BorderMode::ExKeep as i32));
-        self.slots[opt::BORDER_MODE_V as usize] = Some(Value::Int(BorderMode::ExKeep as i32));
-        self.slots[opt::CHECK_EPS as usize] = Some(Value::Double(1e-6));
-        self.slots[opt::CHECK_INC as usize] = Some(Value::Double(1e-3));
-        self.slots[opt::CHECK_TOL as usize] = Some(Value::Double(1e-4));
+        self.reset(Family::Option);
     }
 
     /// Replaces every modifier by the defaults.
     pub fn reset_modifiers(&mut self) {
+        self.reset(Family::Modifier);
+    }
+
+    fn reset(&mut self, family: Family) {
         self.clear();
-        self.slots[m::GRID_NAN_MODE as usize] = Some(Value::Int(NanMode::KeepLast as i32));
-        for id in [m::REFPOINT_X, m::REFPOINT_Y, m::REFPOINT_Z, m::REFPOINT_PHI] {
-            self.slots[id as usize] = Some(Value::Double(0.0));
+        for s in SETTINGS.iter().filter(|s| s.family == family) {
+            self.slots[s.id as usize] = s.default;
         }
     }
 
@@ -333,7 +398,7 @@ impl Settings {
         if kind != Kind::Double {
             return Err(SettingError::WrongType { name, expected: "integer" });
         }
-        if (id == opt::SMOOTH_U_BEGIN || id == opt::SMOOTH_U_END) && !(value > 0.0) {
+        if info(id).is_some_and(|s| s.accepts == Accepts::Positive) && !(value > 0.0) {
             return Err(SettingError::Refused { name, value, why: "must be greater than zero" });
         }
         self.slots[id as usize] = Some(Value::Double(value));

@@ -11,7 +11,7 @@ use crate::error::{Error, Result};
 use crate::grid::VLayout;
 use crate::header::DataFormat;
 use crate::road::Road;
-use crate::settings::{opt, Value};
+use crate::settings::{Accepts, Family, Settings, Value, SETTINGS};
 use std::io::{self, BufWriter, Write};
 use std::path::Path;
 
@@ -25,48 +25,16 @@ pub fn write(road: &Road, path: impl AsRef<Path>, format: DataFormat) -> Result<
     out.flush().map_err(err)
 }
 
-const OPTION_KEYWORDS: [(u32, &str); 13] = [
-    (opt::BORDER_MODE_U, "BORDER_MODE_U"),
-    (opt::BORDER_MODE_V, "BORDER_MODE_V"),
-    (opt::BORDER_OFFSET_U, "BORDER_OFFSET_U"),
-    (opt::BORDER_OFFSET_V, "BORDER_OFFSET_V"),
-    (opt::SMOOTH_U_BEGIN, "BORDER_SMOOTH_UBEG"),
-    (opt::SMOOTH_U_END, "BORDER_SMOOTH_UEND"),
-    (opt::REFLINE_CONTINUE, "REFLINE_CONTINUATION"),
-    (opt::REFLINE_FAR, "REFLINE_SEARCH_FAR"),
-    (opt::REFLINE_CLOSE, "REFLINE_SEARCH_CLOSE"),
-    (opt::CHECK_EPS, "CHECK_EPS"),
-    (opt::CHECK_INC, "CHECK_INC"),
-    (opt::CHECK_TOL, "CHECK_TOL"),
-    (opt::WARN_CURV_GLOBAL, "WARN_CURV_GLOBAL"),
-];
-
-const MODIFIER_KEYWORDS: [(u32, &str); 24] = [
-    (crate::settings::m::SCALE_Z, "SCALE_Z_GRID"),
-    (crate::settings::m::SCALE_SLOPE, "SCALE_SLOPE"),
-    (crate::settings::m::SCALE_BANK, "SCALE_BANKING"),
-    (crate::settings::m::SCALE_LENGTH, "SCALE_LENGTH"),
-    (crate::settings::m::SCALE_WIDTH, "SCALE_WIDTH"),
-    (crate::settings::m::SCALE_CURVATURE, "SCALE_CURVATURE"),
-    (crate::settings::m::GRID_NAN_MODE, "GRID_NAN_MODE"),
-    (crate::settings::m::GRID_NAN_OFFSET, "GRID_NAN_OFFSET"),
-    (crate::settings::m::REFPOINT_V, "REFPOINT_V"),
-    (crate::settings::m::REFPOINT_V_FRAC, "REFPOINT_V_FRACTION"),
-    (crate::settings::m::REFPOINT_V_OFFSET, "REFPOINT_V_OFFSET"),
-    (crate::settings::m::REFPOINT_U, "REFPOINT_U"),
-    (crate::settings::m::REFPOINT_U_FRAC, "REFPOINT_U_FRACTION"),
-    (crate::settings::m::REFPOINT_U_OFFSET, "REFPOINT_U_OFFSET"),
-    (crate::settings::m::REFPOINT_X, "REFPOINT_X"),
-    (crate::settings::m::REFPOINT_Y, "REFPOINT_Y"),
-    (crate::settings::m::REFPOINT_Z, "REFPOINT_Z"),
-    (crate::settings::m::REFPOINT_PHI, "REFPOINT_PHI"),
-    (crate::settings::m::REFLINE_OFFSET_X, "REFLINE_OFFSET_X"),
-    (crate::settings::m::REFLINE_OFFSET_Y, "REFLINE_OFFSET_Y"),
-    (crate::settings::m::REFLINE_OFFSET_Z, "REFLINE_OFFSET_Z"),
-    (crate::settings::m::REFLINE_OFFSET_PHI, "REFLINE_OFFSET_PHI"),
-    (crate::settings::m::REFLINE_ROTCENTER_X, "REFLINE_ROTCENTER_X"),
-    (crate::settings::m::REFLINE_ROTCENTER_Y, "REFLINE_ROTCENTER_Y"),
-];
+/// The settings of a family written back to a file: those with a keyword, in table order
+/// (the message count lives in the header, not in the options).
+fn written(settings: &Settings, family: Family) -> impl Iterator<Item = (&'static str, Value)> + '_ {
+    SETTINGS.iter().filter(move |s| s.family == family && s.accepts != Accepts::Count).filter_map(|s| {
+        let value = settings.get(s.id)?;
+        // A check read from a file is switched on by 1 and stored as its identifier.
+        let value = if s.accepts == Accepts::Flag { Value::Int(1) } else { value };
+        Some((s.keyword?, value))
+    })
+}
 
 fn value_text(v: Value) -> String {
     match v {
@@ -124,18 +92,13 @@ pub fn write_to(road: &Road, out: &mut impl Write, format: DataFormat) -> io::Re
     }
     writeln!(out, "$!**********************************************************************")?;
     writeln!(out, "$ROAD_CRG_OPTS")?;
-    for (id, name) in OPTION_KEYWORDS {
-        if let Some(v) = road.options.get(id) {
-            let v = if id == opt::WARN_CURV_GLOBAL { Value::Int(1) } else { v };
-            writeln!(out, "{name:<25}= {}", value_text(v))?;
-        }
+    for (name, v) in written(&road.options, Family::Option) {
+        writeln!(out, "{name:<25}= {}", value_text(v))?;
     }
     writeln!(out, "$!**********************************************************************")?;
     writeln!(out, "$ROAD_CRG_MODS")?;
-    for (id, name) in MODIFIER_KEYWORDS {
-        if let Some(v) = road.modifiers.get(id) {
-            writeln!(out, "{name:<25}= {}", value_text(v))?;
-        }
+    for (name, v) in written(&road.modifiers, Family::Modifier) {
+        writeln!(out, "{name:<25}= {}", value_text(v))?;
     }
     if !road.header.mpro.is_empty() {
         writeln!(out, "$!**********************************************************************")?;

@@ -100,3 +100,28 @@ fn evaluation_survives_the_roundtrip() {
         assert_eq!(a.uv_to_xy(u, v).unwrap(), b.uv_to_xy(u, v).unwrap());
     }
 }
+
+/// Every option and modifier with a file keyword is written and read back with its value.
+#[test]
+fn every_setting_with_a_keyword_roundtrips() {
+    use opencrg::settings::{Accepts, Family, Kind, SETTINGS};
+    let mut road = curved_banked_sloped().build().unwrap();
+    for (k, s) in SETTINGS.iter().enumerate() {
+        if s.keyword.is_none() || s.accepts == Accepts::Count {
+            continue;
+        }
+        let table = match s.family {
+            Family::Option => road.options_mut(),
+            Family::Modifier => road.modifiers_mut(),
+        };
+        match (s.kind, s.accepts) {
+            (Kind::Int, Accepts::Flag) => table.set_int(s.id, s.id as i32).unwrap(),
+            (Kind::Int, Accepts::Choice { max }) => table.set_int(s.id, (k as i32) % (max + 1)).unwrap(),
+            (Kind::Int, _) => table.set_int(s.id, 1).unwrap(),
+            (Kind::Double, _) => table.set_double(s.id, 0.125 + k as f64).unwrap(),
+        }
+    }
+    let back = roundtrip(&road, DataFormat::Ldfi, "settings");
+    assert_eq!(back.options(), road.options());
+    assert_eq!(back.modifiers(), road.modifiers());
+}
