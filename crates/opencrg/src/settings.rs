@@ -184,6 +184,8 @@ pub struct SettingInfo {
     pub accepts: Accepts,
 }
 
+// One argument per column keeps each table row on one line.
+#[allow(clippy::too_many_arguments)]
 const fn row(
     id: u32,
     family: Family,
