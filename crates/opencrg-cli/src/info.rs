@@ -6,16 +6,7 @@ use opencrg::{Road, Settings};
 use serde_json::{json, Value as Json};
 
 fn channel_name(c: &Channel) -> String {
-    match c {
-        Channel::RefX => "reference line x".into(),
-        Channel::RefY => "reference line y".into(),
-        Channel::RefU => "reference line u".into(),
-        Channel::RefPhi => "reference line heading".into(),
-        Channel::RefSlope => "reference line slope".into(),
-        Channel::RefBank => "reference line banking".into(),
-        Channel::SectionAt(v) => format!("long section at v = {v}"),
-        Channel::SectionIndex(n) => format!("long section {n}"),
-    }
+    c.to_string()
 }
 
 fn settings_json(s: &Settings) -> Json {

@@ -287,11 +287,11 @@ pub unsafe extern "C" fn crgDataSetGetRefLine(
             return 0;
         }
         let value = |k: usize, i: usize| match k {
-            0 => l.u_first + i as f64 * l.u_inc,
+            0 => l.u_at(i),
             1 => l.x[i],
             2 => l.y[i],
-            3 => l.phi.as_ref().map_or(l.phi_first, |p| p[i]),
-            _ => l.z.as_ref().map_or(l.z_first, |z| z[i]),
+            3 => l.heading_at(i),
+            _ => l.z_at(i),
         };
         for (k, p) in [u, x, y, phi, z].into_iter().enumerate() {
             // SAFETY: `nU` doubles behind each non-null pointer (the contract).

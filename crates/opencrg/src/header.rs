@@ -297,6 +297,21 @@ pub enum Channel {
     SectionIndex(f64),
 }
 
+impl std::fmt::Display for Channel {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Channel::RefX => f.write_str("reference line x"),
+            Channel::RefY => f.write_str("reference line y"),
+            Channel::RefU => f.write_str("reference line u"),
+            Channel::RefPhi => f.write_str("reference line heading"),
+            Channel::RefSlope => f.write_str("reference line slope"),
+            Channel::RefBank => f.write_str("reference line banking"),
+            Channel::SectionAt(v) => write!(f, "long section at v = {v}"),
+            Channel::SectionIndex(n) => write!(f, "long section {n}"),
+        }
+    }
+}
+
 /// Finds `token` (case-insensitively) in `s` before any `!`; returns the text after it.
 fn find_token<'a>(s: &'a str, token: &str) -> Option<&'a str> {
     let s = strip_inline_comment(s);

@@ -118,6 +118,18 @@ const ROAD_KEYS: [(&str, RoadKey); 18] = [
 ];
 
 impl RoadParams {
+    /// The values given, under their keywords (upper case), then the other keys of the
+    /// section in file order.
+    pub fn entries(&self) -> Vec<(String, f64)> {
+        let mut copy = self.clone();
+        let mut out: Vec<(String, f64)> = ROAD_KEYS
+            .iter()
+            .filter_map(|&(word, key)| copy.slot(key).map(|v| (word.to_ascii_uppercase(), v)))
+            .collect();
+        out.extend(self.extra.iter().map(|(k, v)| (k.to_ascii_uppercase(), *v)));
+        out
+    }
+
     fn slot(&mut self, key: RoadKey) -> &mut Option<f64> {
         match key {
             RoadKey::StartU => &mut self.start_u,

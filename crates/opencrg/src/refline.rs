@@ -106,6 +106,21 @@ fn spacing(values: impl Iterator<Item = f64>) -> (f64, f64, f64) {
 }
 
 impl RefLine {
+    /// u of cross section `i`.
+    pub fn u_at(&self, i: usize) -> f64 {
+        self.u_first + i as f64 * self.u_inc
+    }
+
+    /// Heading at cross section `i` (the constant heading when the line has no channel).
+    pub fn heading_at(&self, i: usize) -> f64 {
+        self.phi.as_ref().map_or(self.phi_first, |p| p[i])
+    }
+
+    /// Elevation of the line at cross section `i` (the constant when it has none).
+    pub fn z_at(&self, i: usize) -> f64 {
+        self.z.as_ref().map_or(self.z_first, |z| z[i])
+    }
+
     pub(crate) fn from_records(
         p: &RoadParams,
         cols: &ColumnMap,

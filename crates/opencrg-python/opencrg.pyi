@@ -1,0 +1,187 @@
+"""OpenCRG road surfaces: the reference C library's answers, numpy-vectorised, on a Rust core."""
+
+from os import PathLike
+from typing import NamedTuple, Optional, Union, overload
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+
+OPTIONS: list[str]
+MODIFIERS: list[str]
+
+BORDER_NONE: int
+BORDER_EX_ZERO: int
+BORDER_EX_KEEP: int
+BORDER_REPEAT: int
+BORDER_REFLECT: int
+REFLINE_EXTRAPOLATE: int
+REFLINE_CLOSE_TRACK: int
+CURV_LATERAL: int
+CURV_REFLINE: int
+GRID_NAN_KEEP: int
+GRID_NAN_SET_ZERO: int
+GRID_NAN_KEEP_LAST: int
+
+_Path = Union[str, PathLike[str]]
+_Floats = npt.NDArray[np.float64]
+_ArrayLike = npt.ArrayLike
+_Setting = Union[int, float, bool]
+
+class CrgError(Exception):
+    """Base of the errors of this module."""
+
+class FormatError(CrgError, ValueError):
+    """A road file whose content is wrong (names the file, line and field)."""
+
+class CheckError(CrgError):
+    """A road refused by `Road.check()`."""
+
+class ReferenceLine(NamedTuple):
+    """The reference line at each cross section (read-only float64 arrays)."""
+
+    u: _Floats
+    x: _Floats
+    y: _Floats
+    phi: _Floats
+    z: _Floats
+
+class Road:
+    """A road loaded from a CRG file (LRFI, LDFI, KRBI or KDBI), following its file references.
+
+    ``compat``: ``"2.0.1"`` (releases 2.0.1/1.2.0) or ``"upstream"`` (the default); when
+    not given, the environment variable ``OPENCRG_COMPAT`` decides, as in the C library.
+    Raises ``FileNotFoundError`` for a missing file and ``FormatError`` for a bad one.
+    """
+
+    def __init__(self, path: _Path, *, compat: Optional[str] = None) -> None: ...
+    @staticmethod
+    def from_bytes(data: bytes, name: str = "<bytes>", *, compat: Optional[str] = None) -> Road: ...
+    def check(self) -> None:
+        """Checks the road as crgCheck does; raises CheckError when it fails."""
+    def apply_modifiers(self) -> None:
+        """Applies the modifiers to the data (contact points follow)."""
+    def set_modifier(self, name: str, value: _Setting) -> None:
+        """Sets one modifier (see MODIFIERS); it acts at the next apply_modifiers()."""
+    def remove_modifier(self, name: str) -> None: ...
+    def clear_modifiers(self) -> None: ...
+    @property
+    def modifiers(self) -> dict[str, _Setting]: ...
+    @property
+    def options(self) -> dict[str, _Setting]: ...
+    def write(self, path: _Path, format: str = "KDBI") -> None:
+        """Writes the road in KDBI, KRBI, LDFI or LRFI."""
+    def contact_point(self, *, history: Optional[int] = None, **options: _Setting) -> ContactPoint: ...
+    @property
+    def u_range(self) -> tuple[float, float]: ...
+    @property
+    def v_range(self) -> tuple[float, float]: ...
+    @property
+    def increments(self) -> tuple[float, float]: ...
+    @property
+    def closed_track(self) -> Optional[tuple[float, float]]: ...
+    @property
+    def compat(self) -> str: ...
+    @property
+    def path(self) -> str: ...
+    @property
+    def format(self) -> str: ...
+    @property
+    def warnings(self) -> list[str]: ...
+    @property
+    def grid(self) -> npt.NDArray[np.float32]:
+        """Elevation grid (cross sections x long sections), NaN kept, read-only."""
+    @property
+    def v(self) -> _Floats:
+        """v of each long section."""
+    @property
+    def reference_line(self) -> ReferenceLine: ...
+    @property
+    def header(self) -> dict[str, object]:
+        """comments, road_crg, options, modifiers, mpro, references, format, channels."""
+    @overload
+    def uv_to_z(self, u: float, v: float, **options: _Setting) -> float: ...
+    @overload
+    def uv_to_z(self, u: _ArrayLike, v: _ArrayLike, **options: _Setting) -> _Floats: ...
+    @overload
+    def xy_to_z(self, x: float, y: float, **options: _Setting) -> float: ...
+    @overload
+    def xy_to_z(self, x: _ArrayLike, y: _ArrayLike, **options: _Setting) -> _Floats: ...
+    @overload
+    def uv_to_xy(self, u: float, v: float, **options: _Setting) -> tuple[float, float]: ...
+    @overload
+    def uv_to_xy(self, u: _ArrayLike, v: _ArrayLike, **options: _Setting) -> tuple[_Floats, _Floats]: ...
+    @overload
+    def xy_to_uv(self, x: float, y: float, **options: _Setting) -> tuple[float, float]: ...
+    @overload
+    def xy_to_uv(self, x: _ArrayLike, y: _ArrayLike, **options: _Setting) -> tuple[_Floats, _Floats]: ...
+    @overload
+    def uv_to_pk(self, u: float, v: float, **options: _Setting) -> tuple[float, float]: ...
+    @overload
+    def uv_to_pk(self, u: _ArrayLike, v: _ArrayLike, **options: _Setting) -> tuple[_Floats, _Floats]: ...
+    @overload
+    def xy_to_pk(self, x: float, y: float, **options: _Setting) -> tuple[float, float]: ...
+    @overload
+    def xy_to_pk(self, x: _ArrayLike, y: _ArrayLike, **options: _Setting) -> tuple[_Floats, _Floats]: ...
+    @overload
+    def uv_to_normal(self, u: float, v: float, **options: _Setting) -> tuple[float, float, float, float]: ...
+    @overload
+    def uv_to_normal(
+        self, u: _ArrayLike, v: _ArrayLike, **options: _Setting
+    ) -> tuple[_Floats, _Floats, _Floats, _Floats]: ...
+    @overload
+    def xy_to_normal(self, x: float, y: float, **options: _Setting) -> tuple[float, float, float, float]: ...
+    @overload
+    def xy_to_normal(
+        self, x: _ArrayLike, y: _ArrayLike, **options: _Setting
+    ) -> tuple[_Floats, _Floats, _Floats, _Floats]: ...
+
+class ContactPoint:
+    """A point of evaluation: its own options and x/y search history.
+
+    Answers equal the C library's calls made point by point, in order, on one contact
+    point; NaN where a point is refused.
+    """
+
+    def __init__(self, road: Road, *, history: Optional[int] = None, **options: _Setting) -> None: ...
+    @property
+    def road(self) -> Road: ...
+    @property
+    def options(self) -> dict[str, _Setting]: ...
+    def set_option(self, name: str, value: _Setting) -> None: ...
+    def remove_option(self, name: str) -> None: ...
+    def reset_options(self) -> None: ...
+    def set_history(self, size: int) -> None: ...
+    @overload
+    def uv_to_z(self, u: float, v: float) -> float: ...
+    @overload
+    def uv_to_z(self, u: _ArrayLike, v: _ArrayLike) -> _Floats: ...
+    @overload
+    def xy_to_z(self, x: float, y: float) -> float: ...
+    @overload
+    def xy_to_z(self, x: _ArrayLike, y: _ArrayLike) -> _Floats: ...
+    @overload
+    def uv_to_xy(self, u: float, v: float) -> tuple[float, float]: ...
+    @overload
+    def uv_to_xy(self, u: _ArrayLike, v: _ArrayLike) -> tuple[_Floats, _Floats]: ...
+    @overload
+    def xy_to_uv(self, x: float, y: float) -> tuple[float, float]: ...
+    @overload
+    def xy_to_uv(self, x: _ArrayLike, y: _ArrayLike) -> tuple[_Floats, _Floats]: ...
+    @overload
+    def uv_to_pk(self, u: float, v: float) -> tuple[float, float]: ...
+    @overload
+    def uv_to_pk(self, u: _ArrayLike, v: _ArrayLike) -> tuple[_Floats, _Floats]: ...
+    @overload
+    def xy_to_pk(self, x: float, y: float) -> tuple[float, float]: ...
+    @overload
+    def xy_to_pk(self, x: _ArrayLike, y: _ArrayLike) -> tuple[_Floats, _Floats]: ...
+    @overload
+    def uv_to_normal(self, u: float, v: float) -> tuple[float, float, float, float]: ...
+    @overload
+    def uv_to_normal(self, u: _ArrayLike, v: _ArrayLike) -> tuple[_Floats, _Floats, _Floats, _Floats]: ...
+    @overload
+    def xy_to_normal(self, x: float, y: float) -> tuple[float, float, float, float]: ...
+    @overload
+    def xy_to_normal(self, x: _ArrayLike, y: _ArrayLike) -> tuple[_Floats, _Floats, _Floats, _Floats]: ...

@@ -1,0 +1,28 @@
+//! The `opencrg` Python module: roads loaded and evaluated by the Rust core, with
+//! numpy arrays in and out and the GIL released while the core works.
+//!
+//! - `road`: `opencrg.Road`, the loaded data (grid, reference line, header sections,
+//!   modifiers, checks, writing);
+//! - `contact`: `opencrg.ContactPoint`, evaluation with options and a search history;
+//! - `arrays`: turning Python scalars and array-likes into slices and back;
+//! - `names`: the options' and modifiers' Python names, from the core's settings table;
+//! - `errors`: the core's errors as Python exceptions.
+
+use pyo3::prelude::*;
+
+mod arrays;
+mod contact;
+mod errors;
+mod names;
+mod road;
+
+/// The module `opencrg`.
+#[pymodule(name = "opencrg")]
+fn opencrg_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add_class::<road::Road>()?;
+    m.add_class::<contact::ContactPoint>()?;
+    errors::register(m)?;
+    names::register(m)?;
+    Ok(())
+}

@@ -1,0 +1,389 @@
+//! `opencrg.Road`: a loaded road, its data as read-only numpy arrays, its header
+//! sections as dicts, modifiers, checks, writing, and evaluation with keyword options.
+
+use crate::contact::{evaluate, set_options, Call, ContactPoint};
+use crate::errors;
+use crate::names;
+use ::opencrg as crg;
+use ::opencrg::settings::Family;
+use ::opencrg::{Compat, DataFormat, LoadOptions};
+use numpy::{PyArray1, PyArrayMethods};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::sync::PyOnceLock;
+use pyo3::types::{PyDict, PyList, PyTuple, PyType};
+use std::path::PathBuf;
+use std::sync::Arc;
+
+/// The behaviour profile: the argument, else `OPENCRG_COMPAT` as in the C library.
+fn compat(given: Option<&str>) -> PyResult<Compat> {
+    let text = match given {
+        Some(text) => text.to_string(),
+        None => std::env::var("OPENCRG_COMPAT").unwrap_or_default(),
+    };
+    text.parse().map_err(|e: crg::UnknownCompat| PyValueError::new_err(e.to_string()))
+}
+
+/// `ReferenceLine(u, x, y, phi, z)`, a named tuple made once.
+static REFERENCE_LINE: PyOnceLock<Py<PyType>> = PyOnceLock::new();
+
+/// A road loaded from a CRG file (LRFI, LDFI, KRBI or KDBI), following its file
+/// references.
+///
+/// `Road(path, *, compat=None)`: `compat` chooses the reference behaviour, `"2.0.1"`
+/// for the releases 2.0.1/1.2.0 or `"upstream"` (the default); when not given, the
+/// environment variable `OPENCRG_COMPAT` decides, as in the C library. The modifiers of
+/// the file are not applied until `apply_modifiers()` is called.
+#[pyclass(module = "opencrg")]
+pub(crate) struct Road {
+    inner: Arc<crg::Road>,
+    /// Counts the changes (modifiers, checks): contact points follow the road by it.
+    version: u64,
+    /// The grid array handed out since the last change.
+    grid: Option<Py<PyAny>>,
+}
+
+impl Road {
+    /// The core road, shared with contact points.
+    pub(crate) fn shared(&self) -> Arc<crg::Road> {
+        Arc::clone(&self.inner)
+    }
+
+    /// The number of changes so far.
+    pub(crate) fn version(&self) -> u64 {
+        self.version
+    }
+
+    fn from_core(road: crg::Road) -> Self {
+        Road { inner: Arc::new(road), version: 0, grid: None }
+    }
+
+    /// The road for a change: contact points made before see it at their next call.
+    fn edit(&mut self) -> &mut crg::Road {
+        self.version += 1;
+        self.grid = None;
+        Arc::make_mut(&mut self.inner)
+    }
+
+    fn eval_with<'py>(
+        &self,
+        py: Python<'py>,
+        call: Call,
+        a: &Bound<'py, PyAny>,
+        b: &Bound<'py, PyAny>,
+        options: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let mut cp = crg::ContactPoint::new(self.shared());
+        set_options(&mut cp, options)?;
+        evaluate(py, &mut cp, call, a, b)
+    }
+}
+
+/// A read-only numpy array holding a copy of `values`.
+fn frozen<'py, T: numpy::Element + Copy>(py: Python<'py>, values: &[T]) -> PyResult<Bound<'py, PyArray1<T>>> {
+    let array = PyArray1::from_slice(py, values);
+    array.getattr("flags")?.setattr("writeable", false)?;
+    Ok(array)
+}
+
+#[pymethods]
+impl Road {
+    #[new]
+    #[pyo3(signature = (path, *, compat = None))]
+    fn new(py: Python<'_>, path: PathBuf, compat: Option<&str>) -> PyResult<Self> {
+        let options = LoadOptions { compat: self::compat(compat)?, ..LoadOptions::default() };
+        let road = py.detach(|| crg::Road::load_with(&path, options)).map_err(errors::to_py)?;
+        Ok(Road::from_core(road))
+    }
+
+    /// A road from the bytes of a CRG file; `name` stands for the file in messages and
+    /// relative file references are looked up beside it.
+    #[staticmethod]
+    #[pyo3(signature = (data, name = "<bytes>", *, compat = None))]
+    fn from_bytes(py: Python<'_>, data: Vec<u8>, name: &str, compat: Option<&str>) -> PyResult<Self> {
+        let options = LoadOptions { compat: self::compat(compat)?, ..LoadOptions::default() };
+        let road = py.detach(|| crg::Road::from_bytes_with(data, name, options)).map_err(errors::to_py)?;
+        Ok(Road::from_core(road))
+    }
+
+    /// Checks the road as `crgCheck` does; raises `opencrg.CheckError` when it fails.
+    fn check(&mut self) -> PyResult<()> {
+        self.edit().check().map_err(errors::to_py)
+    }
+
+    /// Applies the modifiers (the file's, or those set since) to the data.
+    fn apply_modifiers(&mut self, py: Python<'_>) {
+        let road = self.edit();
+        py.detach(|| road.apply_modifiers());
+    }
+
+    /// Sets one modifier (`road.set_modifier("refline_offset_phi", 0.5)`, see
+    /// `opencrg.MODIFIERS`); it acts at the next `apply_modifiers()`.
+    fn set_modifier(&mut self, name: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
+        names::set(self.edit().modifiers_mut(), Family::Modifier, name, value).map(|_| ())
+    }
+
+    /// Removes one modifier.
+    fn remove_modifier(&mut self, name: &str) -> PyResult<()> {
+        let s = names::lookup(Family::Modifier, name)?;
+        self.edit().modifiers_mut().remove(s.id);
+        Ok(())
+    }
+
+    /// Removes every modifier.
+    fn clear_modifiers(&mut self) {
+        self.edit().modifiers_mut().clear();
+    }
+
+    /// The modifiers, by name.
+    #[getter]
+    fn modifiers<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        names::to_dict(py, self.inner.modifiers())
+    }
+
+    /// The road's options (the defaults and the file's), by name: where contact points start.
+    #[getter]
+    fn options<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        names::to_dict(py, self.inner.options())
+    }
+
+    /// Writes the road to `path` in `format` (`"KDBI"`, `"KRBI"`, `"LDFI"` or `"LRFI"`).
+    #[pyo3(signature = (path, format = "KDBI"))]
+    fn write(&self, py: Python<'_>, path: PathBuf, format: &str) -> PyResult<()> {
+        let format = DataFormat::from_letters(format)
+            .ok_or_else(|| PyValueError::new_err(format!("unknown format '{format}': KDBI, KRBI, LDFI or LRFI")))?;
+        py.detach(|| crg::write(&self.inner, &path, format)).map_err(errors::to_py)
+    }
+
+    /// A contact point on this road with keyword options (see `ContactPoint`).
+    #[pyo3(signature = (*, history = None, **options))]
+    fn contact_point(
+        slf: Bound<'_, Self>,
+        history: Option<usize>,
+        options: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<ContactPoint> {
+        ContactPoint::new(slf, history, options)
+    }
+
+    /// (first, last) u of the data.
+    #[getter]
+    fn u_range(&self) -> (f64, f64) {
+        self.inner.u_range()
+    }
+
+    /// (right, left) v of the data.
+    #[getter]
+    fn v_range(&self) -> (f64, f64) {
+        self.inner.v_range()
+    }
+
+    /// (u, v) increments.
+    #[getter]
+    fn increments(&self) -> (f64, f64) {
+        self.inner.increments()
+    }
+
+    /// (u begin, u end) of a closed track, or None.
+    #[getter]
+    fn closed_track(&self) -> Option<(f64, f64)> {
+        self.inner.closed_track()
+    }
+
+    /// The behaviour profile: `"upstream"` or `"2.0.1"`.
+    #[getter]
+    fn compat(&self) -> String {
+        self.inner.compat().to_string()
+    }
+
+    /// The file loaded.
+    #[getter]
+    fn path(&self) -> String {
+        self.inner.header().path.display().to_string()
+    }
+
+    /// The data format of the file: `"KRBI"`, `"KDBI"`, `"LRFI"` or `"LDFI"`.
+    #[getter]
+    fn format(&self) -> &'static str {
+        self.inner.format().name()
+    }
+
+    /// What the reader noticed without refusing the file (misspelt keywords, ...).
+    #[getter]
+    fn warnings(&self) -> Vec<String> {
+        self.inner.warnings().to_vec()
+    }
+
+    /// The elevation grid, float32, shape (number of cross sections, number of long
+    /// sections), NaN kept; read-only.
+    #[getter]
+    fn grid(&mut self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+        if let Some(grid) = &self.grid {
+            return Ok(grid.clone_ref(py));
+        }
+        let g = self.inner.grid();
+        let array = PyArray1::from_slice(py, &g.z).reshape([g.nu, g.nv])?;
+        array.getattr("flags")?.setattr("writeable", false)?;
+        let array = array.into_any().unbind();
+        self.grid = Some(array.clone_ref(py));
+        Ok(array)
+    }
+
+    /// v of each long section (float64, read-only).
+    #[getter]
+    fn v<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        frozen(py, &self.inner.grid().v)
+    }
+
+    /// The reference line at each cross section: a named tuple of read-only float64
+    /// arrays `(u, x, y, phi, z)`.
+    #[getter]
+    fn reference_line<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let class = REFERENCE_LINE.get_or_try_init(py, || -> PyResult<Py<PyType>> {
+            let namedtuple = py.import("collections")?.getattr("namedtuple")?;
+            let class = namedtuple.call1(("ReferenceLine", ["u", "x", "y", "phi", "z"]))?;
+            class.setattr("__module__", "opencrg")?;
+            Ok(class.cast_into::<PyType>()?.unbind())
+        })?;
+        let l = self.inner.reference_line();
+        let each = |f: &dyn Fn(usize) -> f64| (0..l.n).map(f).collect::<Vec<f64>>();
+        let columns =
+            [each(&|i| l.u_at(i)), l.x.clone(), l.y.clone(), each(&|i| l.heading_at(i)), each(&|i| l.z_at(i))];
+        let arrays = columns.iter().map(|c| frozen(py, c)).collect::<PyResult<Vec<_>>>()?;
+        class.bind(py).call1(PyTuple::new(py, arrays)?)
+    }
+
+    /// The header sections as read: `comments` ($CT lines), `road_crg` ($ROAD_CRG
+    /// keywords and values), `options` ($ROAD_CRG_OPTS over the defaults), `modifiers`,
+    /// `mpro` ($ROAD_CRG_MPRO), `references` (files read through $ROAD_CRG_FILE),
+    /// `format` and `channels` ($KD_Definition).
+    #[getter]
+    fn header<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let h = self.inner.header();
+        let dict = PyDict::new(py);
+        dict.set_item("comments", PyList::new(py, &h.comments)?)?;
+        let road = PyDict::new(py);
+        for (key, value) in h.road.entries() {
+            road.set_item(key, value)?;
+        }
+        dict.set_item("road_crg", road)?;
+        dict.set_item("options", names::to_dict(py, &h.options)?)?;
+        dict.set_item("modifiers", names::to_dict(py, &h.modifiers)?)?;
+        let mpro = PyDict::new(py);
+        for (key, value) in &h.mpro {
+            mpro.set_item(key, value)?;
+        }
+        dict.set_item("mpro", mpro)?;
+        let references: Vec<String> = h.references.iter().map(|p| p.display().to_string()).collect();
+        dict.set_item("references", references)?;
+        dict.set_item("format", h.format.name())?;
+        let channels: Vec<String> = h.channels.iter().map(ToString::to_string).collect();
+        dict.set_item("channels", channels)?;
+        Ok(dict)
+    }
+
+    /// Elevation z at (u, v), with keyword options.
+    #[pyo3(signature = (u, v, **options))]
+    fn uv_to_z<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+        options: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        self.eval_with(py, Call::UvToZ, u, v, options)
+    }
+
+    /// Elevation z at (x, y), with keyword options.
+    #[pyo3(signature = (x, y, **options))]
+    fn xy_to_z<'py>(
+        &self,
+        py: Python<'py>,
+        x: &Bound<'py, PyAny>,
+        y: &Bound<'py, PyAny>,
+        options: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        self.eval_with(py, Call::XyToZ, x, y, options)
+    }
+
+    /// (x, y) of (u, v), with keyword options.
+    #[pyo3(signature = (u, v, **options))]
+    fn uv_to_xy<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+        options: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        self.eval_with(py, Call::UvToXy, u, v, options)
+    }
+
+    /// (u, v) of (x, y), with keyword options.
+    #[pyo3(signature = (x, y, **options))]
+    fn xy_to_uv<'py>(
+        &self,
+        py: Python<'py>,
+        x: &Bound<'py, PyAny>,
+        y: &Bound<'py, PyAny>,
+        options: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        self.eval_with(py, Call::XyToUv, x, y, options)
+    }
+
+    /// (heading, curvature) at (u, v), with keyword options.
+    #[pyo3(signature = (u, v, **options))]
+    fn uv_to_pk<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+        options: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        self.eval_with(py, Call::UvToPk, u, v, options)
+    }
+
+    /// (heading, curvature) at (x, y), with keyword options.
+    #[pyo3(signature = (x, y, **options))]
+    fn xy_to_pk<'py>(
+        &self,
+        py: Python<'py>,
+        x: &Bound<'py, PyAny>,
+        y: &Bound<'py, PyAny>,
+        options: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        self.eval_with(py, Call::XyToPk, x, y, options)
+    }
+
+    /// (z, nx, ny, nz) at (u, v), with keyword options.
+    #[pyo3(signature = (u, v, **options))]
+    fn uv_to_normal<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+        options: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        self.eval_with(py, Call::UvToNormal, u, v, options)
+    }
+
+    /// (z, nx, ny, nz) at (x, y), with keyword options.
+    #[pyo3(signature = (x, y, **options))]
+    fn xy_to_normal<'py>(
+        &self,
+        py: Python<'py>,
+        x: &Bound<'py, PyAny>,
+        y: &Bound<'py, PyAny>,
+        options: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        self.eval_with(py, Call::XyToNormal, x, y, options)
+    }
+
+    fn __repr__(&self) -> String {
+        let (u0, u1) = self.inner.u_range();
+        let (v0, v1) = self.inner.v_range();
+        format!(
+            "<opencrg.Road {} ({}), u {u0} .. {u1} m, v {v0} .. {v1} m>",
+            self.inner.header().path.display(),
+            self.inner.format().name()
+        )
+    }
+}

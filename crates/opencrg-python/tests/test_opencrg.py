@@ -1,0 +1,277 @@
+"""The opencrg Python package against the Rust API (through the `opencrg` command), and
+its own contract: shapes, NaN for refused points, options, modifiers, errors, data."""
+
+import subprocess
+import threading
+
+import numpy as np
+import pytest
+
+import opencrg
+from conftest import same_bits, write_ldfi
+
+
+def rust_eval(command, road_path, a, b, xy, raw):
+    """Columns of `opencrg eval` (the Rust API, point by point on one contact point)."""
+    points = "".join(f"{p!r} {q!r}\n" for p, q in zip(a.tolist(), b.tolist()))
+    args = [command, "eval", str(road_path)] + (["--xy"] if xy else []) + (["--raw"] if raw else [])
+    done = subprocess.run(args, input=points, capture_output=True, text=True, check=True)
+    rows = [line.split(",") for line in done.stdout.splitlines()[1:]]
+    return np.array([[float(x) for x in row] for row in rows]).T
+
+
+def prepared(path, raw):
+    road = opencrg.Road(path, compat="upstream")
+    if not raw:
+        road.check()
+        road.apply_modifiers()
+    return road
+
+
+def random_uv(road, n, seed):
+    rng = np.random.default_rng(seed)
+    (u0, u1), (v0, v1) = road.u_range, road.v_range
+    u = rng.uniform(u0 - 5.0, u1 + 5.0, n)
+    v = rng.uniform(v0 - 1.0, v1 + 1.0, n)
+    return u, v
+
+
+@pytest.mark.parametrize("raw", [True, False])
+def test_uv_calls_equal_the_rust_api_bit_for_bit(road_file, opencrg_command, raw):
+    road = prepared(road_file, raw)
+    u, v = random_uv(road, 3000, 1)
+    u[:3], v[:3] = np.nan, 0.0  # refused points
+    _, _, x, y, z, phi, curv = rust_eval(opencrg_command, road_file, u, v, xy=False, raw=raw)
+    cp = opencrg.ContactPoint(road)
+    assert same_bits(cp.uv_to_xy(u, v), (x, y))
+    assert same_bits(cp.uv_to_z(u, v), z)
+    assert same_bits(cp.uv_to_pk(u, v), (phi, curv))
+    assert np.isnan(z[:3]).all()
+    if not raw:  # NaN cells were filled by the default NaN modifier
+        assert np.isfinite(z[3:]).all()
+
+
+@pytest.mark.parametrize("raw", [True, False])
+def test_xy_calls_equal_the_rust_api_bit_for_bit(road_file, opencrg_command, raw):
+    road = prepared(road_file, raw)
+    u, v = random_uv(road, 3000, 2)
+    x, y = road.uv_to_xy(u, v)
+    _, _, ru, rv, z, phi, curv = rust_eval(opencrg_command, road_file, x, y, xy=True, raw=raw)
+    cp = opencrg.ContactPoint(road)
+    assert same_bits(cp.xy_to_uv(x, y), (ru, rv))
+    assert same_bits(cp.xy_to_z(x, y), z)
+    assert same_bits(cp.xy_to_pk(x, y), (phi, curv))
+
+
+@pytest.mark.parametrize("fmt", ["KDBI", "KRBI", "LDFI", "LRFI"])
+def test_every_format_equals_the_rust_api(road_file, opencrg_command, tmp_path, fmt):
+    written = tmp_path / f"road.{fmt}.crg"
+    opencrg.Road(road_file).write(written, fmt)
+    road = prepared(written, raw=False)
+    assert road.format == fmt
+    u, v = random_uv(road, 500, 3)
+    _, _, x, y, z, _, _ = rust_eval(opencrg_command, written, u, v, xy=False, raw=False)
+    assert same_bits(road.uv_to_z(u, v), z)
+    assert same_bits(road.uv_to_xy(u, v), (x, y))
+
+
+def test_scalars_arrays_and_broadcasting(road_file):
+    road = opencrg.Road(road_file)
+    u = np.linspace(1.0, 50.0, 12).reshape(3, 4)
+    z = road.uv_to_z(u, 0.3)
+    assert z.shape == (3, 4) and z.dtype == np.float64
+    assert isinstance(road.uv_to_z(10.0, 0.3), float)
+    assert road.uv_to_z(10.0, 0.3) == road.uv_to_z([10.0], [0.3])[0]
+    assert same_bits(road.uv_to_z(u.tolist(), [0.3] * 4), z)
+    assert same_bits([road.uv_to_z(a, 0.3) for a in u.ravel()], z.ravel())
+    x, y = road.uv_to_xy(np.arange(5), 0)  # integers are read as float64
+    assert x.shape == (5,) and y.shape == (5,)
+    with pytest.raises(ValueError):
+        road.uv_to_z(np.zeros(3), np.zeros(4))
+
+
+def test_refused_points_are_nan(road_file):
+    road = opencrg.Road(road_file)
+    (u0, u1), (v0, v1) = road.u_range, road.v_range
+    u = np.array([u0 - 1.0, 10.0, 10.0, u1 + 1.0, np.nan])
+    v = np.array([0.0, v1 + 0.5, 0.0, 0.0, 0.0])
+    z = road.uv_to_z(u, v, border_mode_u=opencrg.BORDER_NONE, border_mode_v=opencrg.BORDER_NONE)
+    assert np.isnan(z[[0, 1, 3, 4]]).all() and np.isfinite(z[2])
+    kept = road.uv_to_z(u, v)  # default border modes keep the last value
+    assert np.isfinite(kept[:4]).all() and np.isnan(kept[4])
+
+
+def test_options_as_keywords_or_a_contact_point(road_file):
+    road = opencrg.Road(road_file)
+    u, v = random_uv(road, 400, 4)
+    options = {"border_mode_u": opencrg.BORDER_REFLECT, "border_mode_v": opencrg.BORDER_REPEAT,
+               "border_offset_v": 0.25, "border_smooth_ubeg": 2.0}
+    cp = opencrg.ContactPoint(road, **options)
+    assert cp.options["border_mode_v"] == opencrg.BORDER_REPEAT
+    assert same_bits(cp.uv_to_z(u, v), road.uv_to_z(u, v, **options))
+    assert not same_bits(cp.uv_to_z(u, v), road.uv_to_z(u, v))
+    cp.set_option("border_mode_v", opencrg.BORDER_EX_ZERO)
+    cp.remove_option("border_offset_v")
+    assert "border_offset_v" not in cp.options
+    cp.reset_options()
+    assert cp.options["border_mode_v"] == opencrg.BORDER_EX_KEEP
+    assert set(opencrg.OPTIONS) >= set(cp.options)
+    with pytest.raises(KeyError, match="unknown option 'border_mode_w'"):
+        road.uv_to_z(1.0, 0.0, border_mode_w=1)
+    with pytest.raises(ValueError, match="0..4"):
+        opencrg.ContactPoint(road, border_mode_u=9)
+    with pytest.raises(ValueError, match="greater than zero"):
+        cp.set_option("border_smooth_uend", 0.0)
+    with pytest.raises(TypeError):
+        cp.set_option("border_mode_u", 1.5)
+
+
+def test_history_gives_the_same_answers_as_single_calls(road_file):
+    road = opencrg.Road(road_file)
+    u, v = random_uv(road, 300, 5)
+    x, y = road.uv_to_xy(u, v)
+    batch = opencrg.ContactPoint(road, history=20)
+    single = opencrg.ContactPoint(road, history=20)
+    bu, bv = batch.xy_to_uv(x, y)
+    pairs = [single.xy_to_uv(a, b) for a, b in zip(x, y)]
+    assert same_bits((bu, bv), np.array(pairs).T)
+
+
+def test_modifiers_apply_and_contact_points_follow(road_file, tmp_path):
+    road = opencrg.Road(road_file)
+    cp = road.contact_point()
+    before = cp.uv_to_xy(10.0, 0.5)
+    assert road.modifiers["grid_nan_mode"] == opencrg.GRID_NAN_KEEP_LAST  # the defaults
+    road.clear_modifiers()
+    road.set_modifier("refline_offset_phi", 0.5)
+    road.set_modifier("refline_offset_x", 3.0)
+    assert road.modifiers["refline_offset_phi"] == 0.5
+    road.apply_modifiers()
+    after = cp.uv_to_xy(10.0, 0.5)
+    assert after != before
+    # The same modifiers given in the file's $ROAD_CRG_MODS section.
+    mods = "$ROAD_CRG_MODS\nREFLINE_OFFSET_PHI = 0.5\nREFLINE_OFFSET_X = 3.0\n$\n"
+    from_file = opencrg.Road(write_ldfi(tmp_path / "mods.crg", extra_header=mods))
+    assert from_file.header["modifiers"] == {"refline_offset_phi": 0.5, "refline_offset_x": 3.0}
+    from_file.apply_modifiers()
+    u, v = random_uv(road, 200, 6)
+    assert same_bits(road.uv_to_xy(u, v), from_file.uv_to_xy(u, v))
+    road.remove_modifier("refline_offset_x")
+    road.clear_modifiers()
+    assert road.modifiers == {}
+    with pytest.raises(KeyError):
+        road.set_modifier("refline_offset_w", 1.0)
+
+
+def test_data_arrays(road_file):
+    road = opencrg.Road(road_file)
+    g = road.grid
+    assert g.dtype == np.float32 and g.shape == (241, 7)
+    assert not g.flags.writeable
+    with pytest.raises(ValueError):
+        g[0, 0] = 1.0
+    assert np.isnan(g[0, -1]) and np.isfinite(g[-1, -1])
+    assert same_bits(road.v, [-2.0, -1.2, -0.5, 0.0, 0.4, 1.1, 2.0])
+    line = road.reference_line
+    assert line.u.shape == (241,) and same_bits(line.u, np.arange(241) * 0.25)
+    assert line.x[0] == 10.0 and line.y[0] == -5.0
+    assert np.allclose(line.phi, 0.3 + 0.01 * line.u)
+    # The grid at the nodes, on a road without slope and banking, is what evaluation gives
+    # there, less the reference line's elevation.
+    flat = opencrg.Road(write_ldfi(road_file.parent / "flat.crg", slope=lambda u: 0.0, bank=lambda u: 0.0,
+                                   nan_cells=lambda u, v: False))
+    uu, vv = np.meshgrid(flat.reference_line.u, flat.v, indexing="ij")
+    z = flat.uv_to_z(uu, vv)
+    assert np.allclose(z, flat.grid.astype(np.float64) + flat.reference_line.z[:, None], atol=1e-6)
+
+
+def test_header_sections(road_file):
+    h = opencrg.Road(road_file).header
+    assert h["comments"] == ["generated by the opencrg Python tests"]
+    assert h["road_crg"]["REFERENCE_LINE_INCREMENT"] == 0.25
+    assert h["format"] == "LDFI"
+    assert h["channels"][:3] == ["reference line heading", "reference line slope", "reference line banking"]
+    assert h["options"]["border_mode_u"] == opencrg.BORDER_EX_KEEP
+
+
+def test_write_and_read_back(road_file, tmp_path):
+    road = opencrg.Road(road_file)
+    out = tmp_path / "copy.crg"
+    road.write(out, "KDBI")
+    back = opencrg.Road(out)
+    assert same_bits(back.grid, road.grid)
+    assert same_bits(back.reference_line.x, road.reference_line.x)
+    with pytest.raises(ValueError, match="unknown format"):
+        road.write(out, "XYZ")
+
+
+def test_from_bytes_equals_from_file(road_file):
+    a = opencrg.Road(road_file)
+    b = opencrg.Road.from_bytes(road_file.read_bytes(), str(road_file))
+    u, v = random_uv(a, 200, 7)
+    assert same_bits(a.uv_to_z(u, v), b.uv_to_z(u, v))
+
+
+def test_normals(road_file):
+    road = opencrg.Road(road_file)
+    u, v = random_uv(road, 500, 8)
+    road.apply_modifiers()  # no NaN cells left
+    z, nx, ny, nz = road.uv_to_normal(u, v)
+    assert same_bits(z, road.uv_to_z(u, v))
+    assert np.allclose(nx * nx + ny * ny + nz * nz, 1.0) and (nz > 0).all()
+    # On the road, the x/y form answers as the u/v form at the same place.
+    (u0, u1), (v0, v1) = road.u_range, road.v_range
+    inside = (u > u0) & (u < u1) & (v > v0) & (v < v1)
+    assert inside.sum() > 200
+    x, y = road.uv_to_xy(u[inside], v[inside])
+    by_xy = np.array(road.xy_to_normal(x, y))
+    assert np.allclose(by_xy, np.array([z, nx, ny, nz])[:, inside], atol=1e-9)
+
+
+def test_errors_name_the_file_line_and_field(tmp_path):
+    missing = tmp_path / "missing.crg"
+    with pytest.raises(FileNotFoundError) as e:
+        opencrg.Road(missing)
+    assert e.value.filename == str(missing) and "missing.crg" in str(e.value)
+    bad = write_ldfi(tmp_path / "bad.crg")
+    text = bad.read_text().replace("D:reference line slope,m/m", "D:reference line slope,furlong")
+    bad.write_text(text)
+    line = text.splitlines().index("D:reference line slope,furlong") + 1
+    with pytest.raises(opencrg.FormatError) as e:
+        opencrg.Road(bad)
+    assert isinstance(e.value, ValueError) and isinstance(e.value, opencrg.CrgError)
+    assert f"bad.crg:{line}: $KD_Definition" in str(e.value)
+    with pytest.raises(opencrg.FormatError, match="is empty"):
+        opencrg.Road.from_bytes(b"", "empty.crg")
+
+
+def test_compat_profile(road_file, monkeypatch):
+    u, v = random_uv(opencrg.Road(road_file), 300, 9)
+    upstream = opencrg.Road(road_file, compat="upstream")
+    release = opencrg.Road(road_file, compat="2.0.1")
+    assert (upstream.compat, release.compat) == ("upstream", "2.0.1")
+    assert not same_bits(upstream.uv_to_pk(u, v)[0], release.uv_to_pk(u, v)[0])
+    monkeypatch.setenv("OPENCRG_COMPAT", "2.0.1")
+    from_env = opencrg.Road(road_file)
+    assert from_env.compat == "2.0.1"
+    assert same_bits(from_env.uv_to_pk(u, v), release.uv_to_pk(u, v))
+    monkeypatch.setenv("OPENCRG_COMPAT", "2.1-beta")
+    with pytest.raises(ValueError, match="unknown compatibility profile '2.1-beta'"):
+        opencrg.Road(road_file)
+
+
+def test_threads_share_a_road(road_file):
+    road = opencrg.Road(road_file)
+    u, v = random_uv(road, 20000, 10)
+    expected = road.uv_to_z(u, v)
+    results = [None] * 4
+
+    def work(k):
+        results[k] = road.contact_point().uv_to_z(u, v)
+
+    threads = [threading.Thread(target=work, args=(k,)) for k in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert all(same_bits(r, expected) for r in results)
