@@ -34,7 +34,7 @@ def main():
     x, y = road.uv_to_xy(u, v)
 
     def ours():
-        cp = road.contact_point()
+        cp = opencrg.ContactPoint(road)
         return cp.uv_to_z, cp.xy_to_uv
 
     def pycrg():

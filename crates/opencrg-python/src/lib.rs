@@ -3,7 +3,8 @@
 //!
 //! - `road`: `opencrg.Road`, the loaded data (grid, reference line, header sections,
 //!   modifiers, checks, writing);
-//! - `contact`: `opencrg.ContactPoint`, evaluation with options and a search history;
+//! - `contact`: `opencrg.ContactPoint`, a road with options and a search history;
+//! - `evaluation`: the core's batch calls on Python inputs, options by name;
 //! - `arrays`: turning Python scalars and array-likes into slices and back;
 //! - `names`: the options' and modifiers' Python names, from the core's settings table;
 //! - `errors`: the core's errors as Python exceptions.
@@ -13,6 +14,7 @@ use pyo3::prelude::*;
 mod arrays;
 mod contact;
 mod errors;
+mod evaluation;
 mod names;
 mod road;
 

@@ -1,8 +1,8 @@
 //! `opencrg.Road`: a loaded road, its data as read-only numpy arrays, its header
 //! sections as dicts, modifiers, checks, writing, and evaluation with keyword options.
 
-use crate::contact::{evaluate, set_options, Call, ContactPoint};
 use crate::errors;
+use crate::evaluation::{evaluate, set_options, Call};
 use crate::names;
 use ::opencrg as crg;
 use ::opencrg::settings::Family;
@@ -153,16 +153,6 @@ impl Road {
         let format = DataFormat::from_letters(format)
             .ok_or_else(|| PyValueError::new_err(format!("unknown format '{format}': KDBI, KRBI, LDFI or LRFI")))?;
         py.detach(|| crg::write(&self.inner, &path, format)).map_err(errors::to_py)
-    }
-
-    /// A contact point on this road with keyword options (see `ContactPoint`).
-    #[pyo3(signature = (*, history = None, **options))]
-    fn contact_point(
-        slf: Bound<'_, Self>,
-        history: Option<usize>,
-        options: Option<&Bound<'_, PyDict>>,
-    ) -> PyResult<ContactPoint> {
-        ContactPoint::new(slf, history, options)
     }
 
     /// (first, last) u of the data.

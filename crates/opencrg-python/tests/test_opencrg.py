@@ -139,7 +139,7 @@ def test_history_gives_the_same_answers_as_single_calls(road_file):
 
 def test_modifiers_apply_and_contact_points_follow(road_file, tmp_path):
     road = opencrg.Road(road_file)
-    cp = road.contact_point()
+    cp = opencrg.ContactPoint(road)
     before = cp.uv_to_xy(10.0, 0.5)
     assert road.modifiers["grid_nan_mode"] == opencrg.GRID_NAN_KEEP_LAST  # the defaults
     road.clear_modifiers()
@@ -267,7 +267,7 @@ def test_threads_share_a_road(road_file):
     results = [None] * 4
 
     def work(k):
-        results[k] = road.contact_point().uv_to_z(u, v)
+        results[k] = opencrg.ContactPoint(road).uv_to_z(u, v)
 
     threads = [threading.Thread(target=work, args=(k,)) for k in range(4)]
     for t in threads:

@@ -9,6 +9,7 @@ mod alloc;
 mod api;
 mod barrier;
 mod extensions;
+mod lock;
 mod msg;
 mod panic;
 mod profile;

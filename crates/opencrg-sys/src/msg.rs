@@ -3,7 +3,7 @@
 //! The library's own messages and the application's `crgMsgPrint` calls go the same
 //! way: formatted in the C shim, routed here.
 
-use crate::panic::lock;
+use crate::lock::lock;
 use std::ffi::{c_char, c_int, CString};
 use std::sync::atomic::{AtomicI32, Ordering};
 use std::sync::Mutex;

@@ -26,8 +26,3 @@ fn report_panic(name: &str, payload: Box<dyn Any + Send>) {
         .unwrap_or_else(|| "unknown cause".into());
     crate::msg::fatal(&format!("{name}: internal error ({why}); the call was refused"));
 }
-
-/// Locks a mutex, recovering the data if an earlier panic poisoned it.
-pub fn lock<T>(m: &std::sync::Mutex<T>) -> std::sync::MutexGuard<'_, T> {
-    m.lock().unwrap_or_else(|e| e.into_inner())
-}

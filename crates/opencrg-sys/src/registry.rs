@@ -4,7 +4,7 @@
 //! fixed address, each behind its own lock, so evaluation on different contact
 //! points from different threads never waits on a shared lock.
 
-use crate::panic::lock;
+use crate::lock::lock;
 use opencrg::{ContactPoint, Road};
 use std::cell::UnsafeCell;
 use std::collections::BTreeSet;

@@ -17,31 +17,57 @@
 // Comparisons like `!(x > 0.0)` are meant to reject NaN as well; they stay.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-mod batch;
-mod check;
-mod compat;
-mod contact;
-mod error;
-pub mod eval;
-pub mod grid;
-pub mod header;
-mod memory;
-mod modifiers;
-mod normal;
-pub mod reader;
-pub mod records;
-pub mod refline;
-pub mod report;
-mod road;
-pub mod search;
-pub mod settings;
+// The layers, each using only those before it (checked by tests/layers.rs):
+// `base` (errors, settings, profiles, memory), `model` (the road as data), `read` and
+// `write` (files to model and back, beside each other), `query` (evaluation, search,
+// contact points, modifiers, checks), and `synth` on top.
+mod base {
+    pub(crate) mod compat;
+    pub(crate) mod error;
+    pub(crate) mod memory;
+    pub mod settings;
+}
+mod model {
+    pub mod grid;
+    pub mod header;
+    pub mod refline;
+    pub mod report;
+    pub(crate) mod road;
+    pub(crate) mod sample_index;
+}
+mod read {
+    pub(crate) mod build;
+    pub mod reader;
+    pub(crate) mod records;
+    pub(crate) mod syntax;
+}
+mod write {
+    pub mod writer;
+}
+mod query {
+    pub(crate) mod batch;
+    pub(crate) mod check;
+    pub(crate) mod contact;
+    pub(crate) mod eval;
+    pub(crate) mod modifiers;
+    pub(crate) mod normal;
+    pub(crate) mod search;
+}
 pub mod synth;
-pub mod writer;
+
+pub use base::settings;
+use base::{compat, error, memory};
+pub use model::{grid, header, refline, report};
+use model::{road, sample_index};
+use query::{contact, eval, normal, search};
+pub use read::reader;
+use read::{records, syntax};
+pub use write::writer;
 
 pub use compat::{Compat, UnknownCompat};
 pub use contact::ContactPoint;
 pub use error::{Error, Location, Result};
-pub use header::DataFormat;
+pub use header::{Channel, DataFormat};
 pub use road::{LoadOptions, Road};
 pub use settings::{Settings, Value};
 pub use writer::write;

@@ -6,7 +6,8 @@
 //! Binary formats (KRBI, KDBI) are big-endian IEEE numbers, records packed one
 //! after another.
 
-use crate::header::{parse_f64_prefix, DataFormat};
+use crate::header::DataFormat;
+use crate::syntax::parse_f64_prefix;
 use byteorder::{BigEndian, ByteOrder};
 
 /// Why decoding stopped early.

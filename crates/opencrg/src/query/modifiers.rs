@@ -4,7 +4,7 @@
 use crate::eval::{self, EvalOptions};
 use crate::grid::VLayout;
 use crate::road::Road;
-use crate::search::SampleIndex;
+use crate::sample_index::SampleIndex;
 use crate::settings::{m, NanMode, Settings};
 
 impl Road {

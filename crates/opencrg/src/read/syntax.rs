@@ -5,6 +5,8 @@
 //! character is `*` is a comment. Numbers are read like C's `atof`: the longest
 //! numeric prefix counts, the rest of the field is ignored.
 
+use crate::header::Channel;
+
 /// The sections of a CRG header.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Section {
@@ -223,95 +225,6 @@ pub fn lookup<T: Copy>(table: &[(&'static str, T)], key: &str) -> Option<(&'stat
     table.iter().filter(|(name, _)| key.starts_with(name)).max_by_key(|(name, _)| name.len()).copied()
 }
 
-/// The data formats of the data section.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum DataFormat {
-    /// `LRFI`: text, 10-character fields, 8 per 80-character line.
-    Lrfi,
-    /// `LDFI`: text, 20-character fields, 4 per 80-character line.
-    Ldfi,
-    /// `KRBI`: big-endian 4-byte floats.
-    Krbi,
-    /// `KDBI`: big-endian 8-byte doubles.
-    Kdbi,
-}
-
-impl DataFormat {
-    /// The format named after `#:` (any case, comments after it ignored); `None` for
-    /// anything but the four formats of the specification.
-    pub fn from_letters(letters: &str) -> Option<Self> {
-        let name = strip_inline_comment(letters).trim().to_ascii_uppercase();
-        Some(match name.as_str() {
-            "LRFI" => DataFormat::Lrfi,
-            "LDFI" => DataFormat::Ldfi,
-            "KRBI" => DataFormat::Krbi,
-            "KDBI" => DataFormat::Kdbi,
-            _ => return None,
-        })
-    }
-
-    /// The format's name as written after `#:`.
-    pub fn name(self) -> &'static str {
-        match self {
-            DataFormat::Lrfi => "LRFI",
-            DataFormat::Ldfi => "LDFI",
-            DataFormat::Krbi => "KRBI",
-            DataFormat::Kdbi => "KDBI",
-        }
-    }
-
-    /// Whether the data is text.
-    pub fn is_text(self) -> bool {
-        matches!(self, DataFormat::Lrfi | DataFormat::Ldfi)
-    }
-
-    /// Width of one value: characters for text, bytes for binary.
-    pub fn field_width(self) -> usize {
-        match self {
-            DataFormat::Lrfi => 10,
-            DataFormat::Ldfi => 20,
-            DataFormat::Krbi => 4,
-            DataFormat::Kdbi => 8,
-        }
-    }
-}
-
-/// One `D:` channel definition.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Channel {
-    /// Reference line x.
-    RefX,
-    /// Reference line y.
-    RefY,
-    /// Reference line u.
-    RefU,
-    /// Reference line heading.
-    RefPhi,
-    /// Reference line banking.
-    RefBank,
-    /// Reference line slope.
-    RefSlope,
-    /// A long section at an explicit v.
-    SectionAt(f64),
-    /// The n-th long section of a regular v grid.
-    SectionIndex(f64),
-}
-
-impl std::fmt::Display for Channel {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Channel::RefX => f.write_str("reference line x"),
-            Channel::RefY => f.write_str("reference line y"),
-            Channel::RefU => f.write_str("reference line u"),
-            Channel::RefPhi => f.write_str("reference line heading"),
-            Channel::RefSlope => f.write_str("reference line slope"),
-            Channel::RefBank => f.write_str("reference line banking"),
-            Channel::SectionAt(v) => write!(f, "long section at v = {v}"),
-            Channel::SectionIndex(n) => write!(f, "long section {n}"),
-        }
-    }
-}
-
 /// Finds `token` (case-insensitively) in `s` before any `!`; returns the text after it.
 fn find_token<'a>(s: &'a str, token: &str) -> Option<&'a str> {
     let s = strip_inline_comment(s);
@@ -366,6 +279,7 @@ pub fn parse_channel(line: &str) -> Result<Channel, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::header::DataFormat;
 
     #[test]
     fn numbers_read_like_atof() {

@@ -41,12 +41,12 @@ impl ContactPoint {
         let n = count([u, v], &[&mut *z]);
         let road = &**self.road();
         for i in 0..n.min(PREFETCH_AHEAD) {
-            road.prefetch.prefetch(road, u[i], v[i]);
+            road.prefetch_cells(u[i], v[i]);
         }
         each(n, &mut [z], |i| {
             let ahead = i + PREFETCH_AHEAD;
             if ahead < n {
-                road.prefetch.prefetch(road, u[ahead], v[ahead]);
+                road.prefetch_cells(u[ahead], v[ahead]);
             }
             self.uv_to_z_fetched(u[i], v[i]).map(|z| [z])
         })

@@ -131,7 +131,7 @@ impl ContactPoint {
     /// Elevation at (u, v); an error where a border mode of none refuses.
     #[inline(always)]
     pub fn uv_to_z(&self, u: f64, v: f64) -> Result<f64> {
-        self.road.prefetch.prefetch(&self.road, u, v);
+        self.road.prefetch_cells(u, v);
         self.uv_to_z_fetched(u, v)
     }
 
@@ -153,7 +153,7 @@ impl ContactPoint {
     /// answers. Never panics.
     #[inline(always)]
     pub fn uv_to_z_plain(&self, u: f64, v: f64) -> Option<f64> {
-        self.road.prefetch.prefetch(&self.road, u, v);
+        self.road.prefetch_cells(u, v);
         eval::uv_to_z_plain(&self.road, &self.eval, u, v)
     }
 
@@ -169,7 +169,7 @@ impl ContactPoint {
     pub fn xy_to_uv(&mut self, x: f64, y: f64) -> Result<(f64, f64)> {
         finite(x, y)?;
         let road = &*self.road;
-        Ok(search::xy_to_uv(&road.line, &road.index, &self.eval, &mut self.history, x, y))
+        Ok(search::xy_to_uv(&road.line, &road.index, self.eval.closed_search, &mut self.history, x, y))
     }
 
     /// Elevation and the upward unit normal (x, y, z components) of the evaluated

@@ -267,9 +267,15 @@ pub fn info(id: u32) -> Option<&'static SettingInfo> {
     SETTINGS.get(row as usize)
 }
 
-/// The setting of a family with this file keyword (any case).
-pub fn by_keyword(family: Family, keyword: &str) -> Option<&'static SettingInfo> {
-    SETTINGS.iter().find(|s| s.family == family && s.keyword.is_some_and(|k| k.eq_ignore_ascii_case(keyword)))
+/// The setting of a family whose file keyword is the longest prefix of `word` (any
+/// case): files are read that way, so `REFPOINT_U_FRACTION` is not `REFPOINT_U`, and a
+/// keyword with a suffix still counts.
+pub fn by_keyword(family: Family, word: &str) -> Option<&'static SettingInfo> {
+    let starts = |k: &str| word.len() >= k.len() && word.as_bytes()[..k.len()].eq_ignore_ascii_case(k.as_bytes());
+    SETTINGS
+        .iter()
+        .filter(|s| s.family == family && s.keyword.is_some_and(starts))
+        .max_by_key(|s| s.keyword.map_or(0, str::len))
 }
 
 /// Family and type of a known identifier; `None` for unknown identifiers.
@@ -482,6 +488,17 @@ mod tests {
         assert!(o.remove(opt::BORDER_MODE_U));
         assert_eq!(o.get_int(opt::BORDER_MODE_U), None);
         assert!(!o.remove(99));
+    }
+
+    #[test]
+    fn keywords_match_by_longest_prefix() {
+        let id = |w| by_keyword(Family::Modifier, w).map(|s| s.id);
+        assert_eq!(id("refpoint_u_fraction"), Some(m::REFPOINT_U_FRAC));
+        assert_eq!(id("REFPOINT_U"), Some(m::REFPOINT_U));
+        assert_eq!(id("refpoint_u_offsetx"), Some(m::REFPOINT_U_OFFSET));
+        assert_eq!(id("refpoint"), None);
+        assert_eq!(by_keyword(Family::Option, "refpoint_u").map(|s| s.id), None);
+        assert_eq!(by_keyword(Family::Option, "refline_search_ufrac").map(|s| s.id), Some(opt::REFLINE_SEARCH_U_FRAC));
     }
 
     #[test]

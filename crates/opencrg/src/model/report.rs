@@ -2,7 +2,8 @@
 //! preparing a road, and the events of loading, checking and applying modifiers, for
 //! a front end (the C API prints them as messages) to pass on.
 
-use crate::road::Road;
+use crate::grid::Grid;
+use crate::refline::RefLine;
 use std::path::PathBuf;
 
 /// Figures of a prepared road.
@@ -92,10 +93,9 @@ fn finite_range(values: &[f32]) -> (f32, f32) {
     (lo.into_iter().fold(f32::INFINITY, f32::min), hi.into_iter().fold(f32::NEG_INFINITY, f32::max))
 }
 
-impl Road {
-    /// The figures of the road as it is now.
-    pub fn statistics(&self) -> Statistics {
-        let (g, l) = (&self.grid, &self.line);
+impl Statistics {
+    /// The figures of a reference line and grid as they are now.
+    pub(crate) fn of(l: &RefLine, g: &Grid) -> Statistics {
         let mean_of = |row: &[f32]| {
             let (sum, n) =
                 row.iter().filter(|z| !z.is_nan()).fold((0.0, 0usize), |(s, n), &z| (s + f64::from(z), n + 1));
@@ -135,14 +135,5 @@ impl Road {
             banking: l.bank.as_ref().map(|b| (b[0], b[b.len() - 1])),
             z_line: l.z.as_ref().map_or((0.0, 0.0), |z| (z[0], z[n - 1])),
         }
-    }
-
-    /// The events since the last call, oldest first.
-    pub fn take_events(&mut self) -> Vec<Event> {
-        std::mem::take(&mut self.events)
-    }
-
-    pub(crate) fn note(&mut self, event: Event) {
-        self.events.push(event);
     }
 }

@@ -2,8 +2,6 @@
 //! straight line), z integrated from the slope, banking, and closed-track data.
 
 use crate::compat::Compat;
-use crate::reader::RoadParams;
-use crate::road::{Builder, ColumnMap};
 
 /// Which optional end values the header defined.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -95,16 +93,6 @@ pub(crate) struct Trig {
     pub last_cos: f64,
 }
 
-fn spacing(values: impl Iterator<Item = f64>) -> (f64, f64, f64) {
-    let (mut min, mut max, mut sum) = (f64::INFINITY, f64::NEG_INFINITY, 0.0);
-    for d in values {
-        min = min.min(d);
-        max = max.max(d);
-        sum += d;
-    }
-    (min, max, sum)
-}
-
 impl RefLine {
     /// u of cross section `i`.
     pub fn u_at(&self, i: usize) -> f64 {
@@ -119,91 +107,6 @@ impl RefLine {
     /// Elevation of the line at cross section `i` (the constant when it has none).
     pub fn z_at(&self, i: usize) -> f64 {
         self.z.as_ref().map_or(self.z_first, |z| z[i])
-    }
-
-    pub(crate) fn from_records(
-        p: &RoadParams,
-        cols: &ColumnMap,
-        b: Builder,
-        n: usize,
-        mut u_first: f64,
-        mut u_inc: f64,
-    ) -> Result<RefLine, String> {
-        let u_last;
-        if cols.x.is_some() {
-            let (min, max, total) =
-                spacing(b.x.windows(2).zip(b.y.windows(2)).map(|(x, y)| (x[1] - x[0]).hypot(y[1] - y[0])));
-            if !(min >= 1e-6) {
-                return Err("reference line x/y points are closer than 1e-6 m".into());
-            }
-            if (max - min) / min > 3e-2 {
-                return Err("reference line x/y points are not evenly spaced".into());
-            }
-            u_inc = total / (n - 1) as f64;
-            u_last = total;
-        } else if cols.u.is_some() {
-            let (min, max, _) = spacing(b.u.windows(2).map(|w| w[1] - w[0]));
-            if !(min >= 1e-6) {
-                return Err("reference line u values do not increase".into());
-            }
-            if (max - min) / min > 3e-2 {
-                return Err("reference line u values are not evenly spaced".into());
-            }
-            u_first = b.u[0];
-            u_last = b.u[n - 1];
-            u_inc = (u_last - u_first) / (n - 1) as f64;
-        } else {
-            u_last = u_first + u_inc * (n - 1) as f64;
-        }
-        let phi_first = p.start_phi.unwrap_or(0.0);
-        let phi = cols.phi.map(|_| {
-            let mut phi = b.phi;
-            phi[0] = phi_first;
-            phi
-        });
-        let slope_first = p.start_slope.unwrap_or(0.0);
-        let bank_first = p.start_bank.unwrap_or(0.0);
-        let bank_last = p.end_bank.unwrap_or(0.0);
-        let has_bank = cols.bank.is_some() || bank_first != 0.0 || bank_last != 0.0;
-        let (x, y) = if cols.x.is_some() { (b.x, b.y) } else { (vec![0.0; n], vec![0.0; n]) };
-        Ok(RefLine {
-            u_first,
-            u_last,
-            u_inc,
-            n,
-            x,
-            y,
-            x_first: p.start_x.unwrap_or(0.0),
-            y_first: p.start_y.unwrap_or(0.0),
-            x_last: p.end_x.unwrap_or(0.0),
-            y_last: p.end_y.unwrap_or(0.0),
-            phi,
-            phi_first,
-            phi_last: p.end_phi.unwrap_or(0.0),
-            slope: cols.slope.map(|_| b.slope),
-            slope_first,
-            slope_last: p.end_slope.unwrap_or(0.0),
-            bank: cols.bank.map(|_| b.bank),
-            bank_first,
-            bank_last,
-            has_bank,
-            z: None,
-            z_first: p.start_z.unwrap_or(0.0),
-            z_last: p.end_z.unwrap_or(0.0),
-            defined: Defined {
-                x_end: p.top_file_gives.x_end,
-                y_end: p.top_file_gives.y_end,
-                z_start: p.top_file_gives.z_start,
-                z_end: p.top_file_gives.z_end,
-            },
-            trig: Trig::default(),
-            closed: None,
-            last_closed_range: (0.0, 0.0),
-            normals: Vec::new(),
-            seg_len: Vec::new(),
-            curvature: Vec::new(),
-            curv_step: 1,
-        })
     }
 
     /// Computes x/y of every cross section: a straight line along the start heading,

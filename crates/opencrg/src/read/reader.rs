@@ -6,153 +6,13 @@
 //! always win; of the referenced files, the first that defines a section is used.
 
 use crate::error::{Error, Location, Result};
-use crate::header::{self, key_value, lookup, parse_f64_prefix, parse_i32_prefix, Channel, DataFormat, Section, Tag};
+use crate::header::{Channel, DataFormat, Header, RoadKey, RoadParams, ROAD_KEYS};
 use crate::settings::{self, Accepts, Family, Settings};
+use crate::syntax::{self, key_value, lookup, parse_f64_prefix, parse_i32_prefix, Section, Tag};
 use std::path::{Path, PathBuf};
 
 /// Deepest chain of file references followed.
 pub const MAX_REFERENCE_DEPTH: usize = 16;
-
-/// The `$ROAD_CRG` parameters as written in the file (`None` where absent).
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct RoadParams {
-    /// `REFERENCE_LINE_START_U`.
-    pub start_u: Option<f64>,
-    /// `REFERENCE_LINE_END_U`.
-    pub end_u: Option<f64>,
-    /// `REFERENCE_LINE_START_X`.
-    pub start_x: Option<f64>,
-    /// `REFERENCE_LINE_START_Y`.
-    pub start_y: Option<f64>,
-    /// `REFERENCE_LINE_START_Z`.
-    pub start_z: Option<f64>,
-    /// `REFERENCE_LINE_START_PHI`.
-    pub start_phi: Option<f64>,
-    /// `REFERENCE_LINE_START_B` (banking).
-    pub start_bank: Option<f64>,
-    /// `REFERENCE_LINE_START_S` (slope).
-    pub start_slope: Option<f64>,
-    /// `REFERENCE_LINE_END_X`.
-    pub end_x: Option<f64>,
-    /// `REFERENCE_LINE_END_Y`.
-    pub end_y: Option<f64>,
-    /// `REFERENCE_LINE_END_Z`.
-    pub end_z: Option<f64>,
-    /// `REFERENCE_LINE_END_PHI`.
-    pub end_phi: Option<f64>,
-    /// `REFERENCE_LINE_END_B`.
-    pub end_bank: Option<f64>,
-    /// `REFERENCE_LINE_END_S`.
-    pub end_slope: Option<f64>,
-    /// `REFERENCE_LINE_INCREMENT`.
-    pub increment: Option<f64>,
-    /// `LONG_SECTION_V_RIGHT`.
-    pub v_right: Option<f64>,
-    /// `LONG_SECTION_V_LEFT`.
-    pub v_left: Option<f64>,
-    /// `LONG_SECTION_V_INCREMENT`.
-    pub v_increment: Option<f64>,
-    /// WGS84 values (`REFERENCE_LINE_START_LON` ... `REFERENCE_LINE_END_ALT`) and any
-    /// other key of the section, in file order.
-    pub extra: Vec<(String, f64)>,
-    /// Which end values the top file itself gave. Only these choose how the reference
-    /// line is integrated: the reference library forgets which ones a referenced file
-    /// gave (it keeps their values, though).
-    pub top_file_gives: EndsGiven,
-}
-
-/// End values of the reference line that a file gave.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct EndsGiven {
-    /// `REFERENCE_LINE_END_X`.
-    pub x_end: bool,
-    /// `REFERENCE_LINE_END_Y`.
-    pub y_end: bool,
-    /// `REFERENCE_LINE_START_Z`.
-    pub z_start: bool,
-    /// `REFERENCE_LINE_END_Z`.
-    pub z_end: bool,
-}
-
-#[derive(Clone, Copy)]
-enum RoadKey {
-    StartU,
-    EndU,
-    StartX,
-    StartY,
-    StartZ,
-    StartPhi,
-    StartBank,
-    StartSlope,
-    EndX,
-    EndY,
-    EndZ,
-    EndPhi,
-    EndBank,
-    EndSlope,
-    Increment,
-    VRight,
-    VLeft,
-    VIncrement,
-}
-
-const ROAD_KEYS: [(&str, RoadKey); 18] = [
-    ("reference_line_start_u", RoadKey::StartU),
-    ("reference_line_end_u", RoadKey::EndU),
-    ("reference_line_start_x", RoadKey::StartX),
-    ("reference_line_start_y", RoadKey::StartY),
-    ("reference_line_start_z", RoadKey::StartZ),
-    ("reference_line_start_phi", RoadKey::StartPhi),
-    ("reference_line_start_b", RoadKey::StartBank),
-    ("reference_line_start_s", RoadKey::StartSlope),
-    ("reference_line_end_x", RoadKey::EndX),
-    ("reference_line_end_y", RoadKey::EndY),
-    ("reference_line_end_z", RoadKey::EndZ),
-    ("reference_line_end_phi", RoadKey::EndPhi),
-    ("reference_line_end_b", RoadKey::EndBank),
-    ("reference_line_end_s", RoadKey::EndSlope),
-    ("reference_line_increment", RoadKey::Increment),
-    ("long_section_v_right", RoadKey::VRight),
-    ("long_section_v_left", RoadKey::VLeft),
-    ("long_section_v_increment", RoadKey::VIncrement),
-];
-
-impl RoadParams {
-    /// The values given, under their keywords (upper case), then the other keys of the
-    /// section in file order.
-    pub fn entries(&self) -> Vec<(String, f64)> {
-        let mut copy = self.clone();
-        let mut out: Vec<(String, f64)> = ROAD_KEYS
-            .iter()
-            .filter_map(|&(word, key)| copy.slot(key).map(|v| (word.to_ascii_uppercase(), v)))
-            .collect();
-        out.extend(self.extra.iter().map(|(k, v)| (k.to_ascii_uppercase(), *v)));
-        out
-    }
-
-    fn slot(&mut self, key: RoadKey) -> &mut Option<f64> {
-        match key {
-            RoadKey::StartU => &mut self.start_u,
-            RoadKey::EndU => &mut self.end_u,
-            RoadKey::StartX => &mut self.start_x,
-            RoadKey::StartY => &mut self.start_y,
-            RoadKey::StartZ => &mut self.start_z,
-            RoadKey::StartPhi => &mut self.start_phi,
-            RoadKey::StartBank => &mut self.start_bank,
-            RoadKey::StartSlope => &mut self.start_slope,
-            RoadKey::EndX => &mut self.end_x,
-            RoadKey::EndY => &mut self.end_y,
-            RoadKey::EndZ => &mut self.end_z,
-            RoadKey::EndPhi => &mut self.end_phi,
-            RoadKey::EndBank => &mut self.end_bank,
-            RoadKey::EndSlope => &mut self.end_slope,
-            RoadKey::Increment => &mut self.increment,
-            RoadKey::VRight => &mut self.v_right,
-            RoadKey::VLeft => &mut self.v_left,
-            RoadKey::VIncrement => &mut self.v_increment,
-        }
-    }
-}
 
 /// Keywords of `$ROAD_CRG_OPTS` that the reference reads but that change nothing here.
 const IGNORED_OPTION_KEYWORDS: [&str; 9] = [
@@ -205,37 +65,6 @@ pub(crate) struct DataSource {
     pub path: PathBuf,
     pub bytes: FileBytes,
     pub offset: usize,
-}
-
-/// Everything the header sections of a file and the files it references say.
-#[derive(Debug, Clone)]
-pub struct Header {
-    /// The file that was loaded.
-    pub path: PathBuf,
-    /// `$CT` lines.
-    pub comments: Vec<String>,
-    /// `$ROAD_CRG` parameters.
-    pub road: RoadParams,
-    /// Data format from `#:` (KRBI when absent).
-    pub format: DataFormat,
-    /// `D:` channels in column order.
-    pub channels: Vec<Channel>,
-    /// Options from `$ROAD_CRG_OPTS` over the defaults.
-    pub options: Settings,
-    /// Modifiers: the defaults, or exactly those of a `$ROAD_CRG_MODS` section.
-    pub modifiers: Settings,
-    /// `$ROAD_CRG_MPRO` key/value pairs.
-    pub mpro: Vec<(String, String)>,
-    /// Files read through `$ROAD_CRG_FILE`, in reading order.
-    pub references: Vec<PathBuf>,
-    /// `WARN_MSGS` from the options section, if given.
-    pub warn_msgs: Option<i32>,
-    /// Things worth telling the user that did not stop the reading.
-    pub warnings: Vec<String>,
-    /// Whether the top file itself numbered its long sections (`D:long section N`).
-    /// Evaluation finds v cells by index only then: the reference library forgets that
-    /// a referenced file numbered them, and looks numbered sections up by position.
-    pub top_file_numbers_sections: bool,
 }
 
 struct Loader {
@@ -348,13 +177,13 @@ impl Loader {
         let mut section = Section::None;
         let mut reference = String::new();
         let mut reference_line = 0;
-        for line in header::Lines::new(bytes) {
-            let text = header::latin1(line.bytes);
+        for line in syntax::Lines::new(bytes) {
+            let text = syntax::latin1(line.bytes);
             // In comment and file sections only a '$' in column 1 ends the section; in
             // a file section a '$NAME' that is no section keyword starts a file name
             // with an environment variable.
             let column_one = matches!(section, Section::Comment | Section::File);
-            let tag = match header::tag(&text) {
+            let tag = match syntax::tag(&text) {
                 _ if column_one && !text.starts_with('$') => None,
                 Some(Tag::End) if section == Section::File && starts_with_variable(&text) => None,
                 t => t,
@@ -384,7 +213,7 @@ impl Loader {
             }
             match section {
                 Section::Comment => self.header.comments.push(text),
-                _ if header::is_comment(&text) => {}
+                _ if syntax::is_comment(&text) => {}
                 Section::File => {
                     reference_line = line.number;
                     reference.push_str(&reference_piece(&text));
@@ -393,7 +222,7 @@ impl Loader {
                 Section::Options | Section::Modifiers => self.setting_line(section, path, line.number, &text, level)?,
                 Section::Mpro => {
                     if let Some((k, v)) = key_value(&text) {
-                        self.header.mpro.push((k, header::strip_inline_comment(v).trim().to_string()));
+                        self.header.mpro.push((k, syntax::strip_inline_comment(v).trim().to_string()));
                     }
                 }
                 Section::DataDef => self.data_def_line(path, line.number, &text, level)?,
@@ -486,7 +315,7 @@ impl Loader {
         let field = key.to_ascii_uppercase();
         let at = format!("{}:{number}: {field}", path.display());
         let Some(setting) = settings::by_keyword(family, &key) else {
-            if family == Family::Option && IGNORED_OPTION_KEYWORDS.contains(&key.as_str()) {
+            if family == Family::Option && IGNORED_OPTION_KEYWORDS.iter().any(|k| key.starts_with(k)) {
                 return Ok(());
             }
             self.header.warnings.push(format!("{at}: unknown keyword in {name}, ignored"));
@@ -524,7 +353,7 @@ impl Loader {
 
     fn data_def_line(&mut self, path: &Path, number: usize, text: &str, level: usize) -> Result<()> {
         let t = text.trim_start_matches(' ');
-        if header::starts_with_ignore_case(t, "#:") {
+        if syntax::starts_with_ignore_case(t, "#:") {
             self.header.format = DataFormat::from_letters(&t[2..]).ok_or_else(|| {
                 Error::format(
                     path,
@@ -533,14 +362,14 @@ impl Loader {
                     format!("unknown data format '{}' (LRFI, LDFI, KRBI or KDBI)", t[2..].trim()),
                 )
             })?;
-        } else if header::starts_with_ignore_case(t, "D:") {
-            let channel = header::parse_channel(t)
+        } else if syntax::starts_with_ignore_case(t, "D:") {
+            let channel = syntax::parse_channel(t)
                 .map_err(|e| Error::format(path, Location::Line(number), "$KD_Definition", e))?;
             if level == 0 && matches!(channel, Channel::SectionIndex(_)) {
                 self.header.top_file_numbers_sections = true;
             }
             self.header.channels.push(channel);
-        } else if !header::starts_with_ignore_case(t, "U:") {
+        } else if !syntax::starts_with_ignore_case(t, "U:") {
             self.header.warnings.push(format!("{}:{number}: $KD_Definition: ignoring line", path.display()));
         }
         Ok(())
@@ -585,7 +414,7 @@ fn finite_value(path: &Path, number: usize, field: &str, value: &str) -> Result<
 /// The part of a `$ROAD_CRG_FILE` line that belongs to the file name: the first
 /// blank-separated word before any `!`.
 fn reference_piece(line: &str) -> String {
-    header::strip_inline_comment(line).split_whitespace().next().unwrap_or("").to_string()
+    syntax::strip_inline_comment(line).split_whitespace().next().unwrap_or("").to_string()
 }
 
 /// Replaces `$NAME` (up to the next `/`) by the environment variable's value.

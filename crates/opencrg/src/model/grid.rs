@@ -204,6 +204,50 @@ impl Grid {
     }
 }
 
+/// What the elevation lookup needs to start fetching grid memory before the exact
+/// cell is known: reciprocals of the increments (a multiplication is quicker than
+/// the division the exact index takes; the estimate only aims a prefetch).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub(crate) struct PrefetchHint {
+    inv_u_inc: f64,
+    inv_v_inc: f64,
+}
+
+impl PrefetchHint {
+    /// The hint for a grid whose cross sections are `u_inc` apart (none for an uneven grid).
+    pub(crate) fn new(u_inc: f64, g: &Grid) -> Self {
+        match g.layout {
+            VLayout::Indexed => PrefetchHint { inv_u_inc: 1.0 / u_inc, inv_v_inc: 1.0 / g.v_inc },
+            VLayout::Explicit => PrefetchHint::default(),
+        }
+    }
+
+    /// Asks the processor to start loading the grid cells around (u, v), some 20
+    /// cycles before the exact index is known: worth it for lookups at random
+    /// places, which miss the caches. A wrong estimate (or a stale hint) only loads
+    /// other memory; nothing is read.
+    #[inline(always)]
+    pub(crate) fn prefetch(&self, g: &Grid, u_first: f64, u: f64, v: f64) {
+        #[cfg(target_arch = "x86_64")]
+        {
+            use std::arch::x86_64::{_mm_cvttsd_si64, _mm_prefetch, _mm_set_sd, _MM_HINT_T0};
+            let (eu, ev) = ((u - u_first) * self.inv_u_inc, (v - g.v_first) * self.inv_v_inc);
+            // SAFETY: SSE2 is part of every x86_64 target. The conversions truncate
+            // (out of range gives some far index: harmless, unlike the work Rust's
+            // saturating `as` does); the address is only computed, wrapping, never
+            // dereferenced; a prefetch never faults and reads nothing the program sees.
+            unsafe {
+                let (iu, iv) = (_mm_cvttsd_si64(_mm_set_sd(eu)) as usize, _mm_cvttsd_si64(_mm_set_sd(ev)) as usize);
+                let p = g.z.as_ptr().wrapping_add(iu.wrapping_mul(g.nv).wrapping_add(iv));
+                _mm_prefetch(p.cast(), _MM_HINT_T0);
+                _mm_prefetch(p.wrapping_add(g.nv).cast(), _MM_HINT_T0);
+            }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        let _ = (g, u_first, u, v);
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,58 +1,15 @@
-//! The road: reference line and elevation grid, built from a file's header and data.
+//! Building a road from what the reader found: the long sections and channels of the
+//! header, the records of the data section, the reference line from its channels.
 
-use crate::compat::Compat;
 use crate::error::{Error, Location, Result};
 use crate::grid::{Grid, VLayout};
-use crate::header::{Channel, DataFormat};
-use crate::reader::{self, DataSource, Header};
+use crate::header::{Channel, Header, RoadParams};
+use crate::reader::{self, DataSource};
 use crate::records::{self, Truncated};
-use crate::refline::{self, RefLine};
-use crate::search::SampleIndex;
-use crate::settings::Settings;
+use crate::refline::{self, Defined, RefLine, Trig};
+use crate::road::{LoadOptions, Road, MAX_CELLS};
+use crate::sample_index::SampleIndex;
 use std::path::Path;
-
-/// A loaded road, ready for evaluation.
-///
-/// `Road` is immutable during evaluation and can be shared between threads (for
-/// example in an `Arc`); each thread evaluates through its own
-/// [`ContactPoint`](crate::ContactPoint).
-#[derive(Debug, Clone)]
-pub struct Road {
-    pub(crate) header: Header,
-    pub(crate) line: RefLine,
-    pub(crate) grid: Grid,
-    pub(crate) options: Settings,
-    pub(crate) modifiers: Settings,
-    pub(crate) index: SampleIndex,
-    /// Reciprocals of the increments, for the cache prefetch of elevation lookups.
-    pub(crate) prefetch: crate::eval::PrefetchHint,
-    /// The reference behaviour the road follows.
-    pub(crate) compat: Compat,
-    /// Whether each preparation reports the road's statistics (a scan of the grid).
-    report_statistics: bool,
-    /// Events not yet taken by [`Road::take_events`].
-    pub(crate) events: Vec<crate::report::Event>,
-}
-
-/// How a road is loaded.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct LoadOptions {
-    /// The reference behaviour to follow.
-    pub compat: Compat,
-    /// Whether every preparation of the road (after loading, after modifiers that change
-    /// its data) reports its statistics as an [`Event::Prepared`](crate::report::Event):
-    /// a scan of the whole grid, so off unless someone reads them.
-    pub report_statistics: bool,
-}
-
-impl From<Compat> for LoadOptions {
-    fn from(compat: Compat) -> Self {
-        LoadOptions { compat, ..LoadOptions::default() }
-    }
-}
-
-/// Largest road accepted, in grid cells (guards against headers declaring absurd sizes).
-pub const MAX_CELLS: usize = 1 << 34;
 
 impl Road {
     /// Reads a CRG file in any of the four formats, following file references.
@@ -64,7 +21,7 @@ impl Road {
         Road::load_with(path, LoadOptions::default())
     }
 
-    /// [`Road::load`] with options (a [`Compat`] alone will do).
+    /// [`Road::load`] with options (a [`Compat`](crate::Compat) alone will do).
     pub fn load_with(path: impl AsRef<Path>, options: impl Into<LoadOptions>) -> Result<Road> {
         let path = path.as_ref();
         let (header, data) = reader::read(path)?;
@@ -85,7 +42,7 @@ impl Road {
         Road::from_bytes_with(bytes, name, LoadOptions::default())
     }
 
-    /// [`Road::from_bytes`] with options (a [`Compat`] alone will do).
+    /// [`Road::from_bytes`] with options (a [`Compat`](crate::Compat) alone will do).
     pub fn from_bytes_with(bytes: Vec<u8>, name: impl AsRef<Path>, options: impl Into<LoadOptions>) -> Result<Road> {
         let name = name.as_ref();
         let (header, data) = reader::read_bytes(bytes, name)?;
@@ -279,7 +236,7 @@ impl Road {
             options,
             modifiers,
             index: SampleIndex::default(),
-            prefetch: Default::default(),
+            prefetch_hint: Default::default(),
             compat: load.compat,
             report_statistics: load.report_statistics,
             events: Vec::new(),
@@ -288,115 +245,6 @@ impl Road {
         road.events.extend(imported.into_iter().map(crate::report::Event::FileImported));
         road.prepare();
         Ok(road)
-    }
-
-    /// Computes everything derived from the channels: reference line x/y and z,
-    /// closed-track data, and the search index. Runs after loading and after
-    /// modifiers that change the data.
-    pub(crate) fn prepare(&mut self) {
-        use crate::report::Event;
-        if self.line.phi.is_some() {
-            self.note(Event::LineFromHeading);
-        }
-        self.line.integrate_xy(self.compat);
-        if self.line.integrate_z() {
-            self.note(Event::LineZFromSlope);
-        }
-        self.grid.fold_mean();
-        if self.report_statistics {
-            let statistics = self.statistics();
-            self.note(Event::Prepared(Box::new(statistics)));
-        }
-        self.line.update_utility();
-        self.note(Event::ClosedTrack(self.line.closed));
-        self.grid.build_v_table();
-        self.line.update_caches();
-        self.index = SampleIndex::build(&self.line);
-        self.prefetch = crate::eval::PrefetchHint::new(&self.line, &self.grid);
-    }
-
-    /// Whether later preparations (by modifiers) report the road's statistics; see
-    /// [`LoadOptions::report_statistics`].
-    pub fn set_report_statistics(&mut self, on: bool) {
-        self.report_statistics = on;
-    }
-
-    /// The reference behaviour the road follows.
-    pub fn compat(&self) -> Compat {
-        self.compat
-    }
-
-    /// The header as read (comments, parameters, channels, options, modifiers).
-    pub fn header(&self) -> &Header {
-        &self.header
-    }
-
-    /// The reference line.
-    pub fn reference_line(&self) -> &RefLine {
-        &self.line
-    }
-
-    /// The elevation grid.
-    pub fn grid(&self) -> &Grid {
-        &self.grid
-    }
-
-    /// u range of the data: (first, last).
-    pub fn u_range(&self) -> (f64, f64) {
-        (self.line.u_first, self.line.u_last)
-    }
-
-    /// v range of the long sections: (rightmost, leftmost) position.
-    pub fn v_range(&self) -> (f64, f64) {
-        (self.grid.v[0], self.grid.v[self.grid.nv - 1])
-    }
-
-    /// u and v increments (v increment 0 when the long sections are uneven).
-    pub fn increments(&self) -> (f64, f64) {
-        (self.line.u_inc, self.grid.v_inc)
-    }
-
-    /// The u range over which the reference line can be closed, if it can.
-    pub fn closed_track(&self) -> Option<(f64, f64)> {
-        self.line.closed
-    }
-
-    /// The closed-track data as the classic API reports it: whether the line can be
-    /// closed, and the u range found the last time it could be ((0, 0) if never), also
-    /// when modifiers have since made it open.
-    pub fn closed_track_report(&self) -> (bool, f64, f64) {
-        let (a, b) = self.line.last_closed_range;
-        (self.line.closed.is_some(), a, b)
-    }
-
-    /// Default options for new contact points (the file's options over the defaults).
-    pub fn options(&self) -> &Settings {
-        &self.options
-    }
-
-    /// Mutable access to the default options of new contact points.
-    pub fn options_mut(&mut self) -> &mut Settings {
-        &mut self.options
-    }
-
-    /// Modifiers to be applied by [`Road::apply_modifiers`].
-    pub fn modifiers(&self) -> &Settings {
-        &self.modifiers
-    }
-
-    /// Mutable access to the modifiers.
-    pub fn modifiers_mut(&mut self) -> &mut Settings {
-        &mut self.modifiers
-    }
-
-    /// Warnings collected while reading (ignored lines, refused values).
-    pub fn warnings(&self) -> &[String] {
-        &self.header.warnings
-    }
-
-    /// The data format of the file that held the data.
-    pub fn format(&self) -> DataFormat {
-        self.header.format
     }
 }
 
@@ -457,5 +305,102 @@ impl Builder {
             self.phi.push(rec[col]);
         }
         Ok(())
+    }
+}
+
+fn spacing(values: impl Iterator<Item = f64>) -> (f64, f64, f64) {
+    let (mut min, mut max, mut sum) = (f64::INFINITY, f64::NEG_INFINITY, 0.0);
+    for d in values {
+        min = min.min(d);
+        max = max.max(d);
+        sum += d;
+    }
+    (min, max, sum)
+}
+
+impl RefLine {
+    pub(crate) fn from_records(
+        p: &RoadParams,
+        cols: &ColumnMap,
+        b: Builder,
+        n: usize,
+        mut u_first: f64,
+        mut u_inc: f64,
+    ) -> Result<RefLine, String> {
+        let u_last;
+        if cols.x.is_some() {
+            let (min, max, total) =
+                spacing(b.x.windows(2).zip(b.y.windows(2)).map(|(x, y)| (x[1] - x[0]).hypot(y[1] - y[0])));
+            if !(min >= 1e-6) {
+                return Err("reference line x/y points are closer than 1e-6 m".into());
+            }
+            if (max - min) / min > 3e-2 {
+                return Err("reference line x/y points are not evenly spaced".into());
+            }
+            u_inc = total / (n - 1) as f64;
+            u_last = total;
+        } else if cols.u.is_some() {
+            let (min, max, _) = spacing(b.u.windows(2).map(|w| w[1] - w[0]));
+            if !(min >= 1e-6) {
+                return Err("reference line u values do not increase".into());
+            }
+            if (max - min) / min > 3e-2 {
+                return Err("reference line u values are not evenly spaced".into());
+            }
+            u_first = b.u[0];
+            u_last = b.u[n - 1];
+            u_inc = (u_last - u_first) / (n - 1) as f64;
+        } else {
+            u_last = u_first + u_inc * (n - 1) as f64;
+        }
+        let phi_first = p.start_phi.unwrap_or(0.0);
+        let phi = cols.phi.map(|_| {
+            let mut phi = b.phi;
+            phi[0] = phi_first;
+            phi
+        });
+        let slope_first = p.start_slope.unwrap_or(0.0);
+        let bank_first = p.start_bank.unwrap_or(0.0);
+        let bank_last = p.end_bank.unwrap_or(0.0);
+        let has_bank = cols.bank.is_some() || bank_first != 0.0 || bank_last != 0.0;
+        let (x, y) = if cols.x.is_some() { (b.x, b.y) } else { (vec![0.0; n], vec![0.0; n]) };
+        Ok(RefLine {
+            u_first,
+            u_last,
+            u_inc,
+            n,
+            x,
+            y,
+            x_first: p.start_x.unwrap_or(0.0),
+            y_first: p.start_y.unwrap_or(0.0),
+            x_last: p.end_x.unwrap_or(0.0),
+            y_last: p.end_y.unwrap_or(0.0),
+            phi,
+            phi_first,
+            phi_last: p.end_phi.unwrap_or(0.0),
+            slope: cols.slope.map(|_| b.slope),
+            slope_first,
+            slope_last: p.end_slope.unwrap_or(0.0),
+            bank: cols.bank.map(|_| b.bank),
+            bank_first,
+            bank_last,
+            has_bank,
+            z: None,
+            z_first: p.start_z.unwrap_or(0.0),
+            z_last: p.end_z.unwrap_or(0.0),
+            defined: Defined {
+                x_end: p.top_file_gives.x_end,
+                y_end: p.top_file_gives.y_end,
+                z_start: p.top_file_gives.z_start,
+                z_end: p.top_file_gives.z_end,
+            },
+            trig: Trig::default(),
+            closed: None,
+            last_closed_range: (0.0, 0.0),
+            normals: Vec::new(),
+            seg_len: Vec::new(),
+            curvature: Vec::new(),
+            curv_step: 1,
+        })
     }
 }
