@@ -338,6 +338,9 @@ extern "C" {
 
 /*
  Reads a CRG file; returns the data set id (> 0) or 0.
+
+ # Safety
+ `filename` is null or a NUL-terminated string.
  */
 int crgLoaderReadFile(const char *filename);
 
@@ -368,21 +371,34 @@ const char *crgGetReleaseInfo(void);
 
 /*
  u range of a data set.
+
+ # Safety
+ `uMin` and `uMax` are null or point to a double each.
  */
 int crgDataSetGetURange(int dataSetId, double *uMin, double *uMax);
 
 /*
  v range of a data set.
+
+ # Safety
+ `vMin` and `vMax` are null or point to a double each.
  */
 int crgDataSetGetVRange(int dataSetId, double *vMin, double *vMax);
 
 /*
  u and v increments of a data set.
+
+ # Safety
+ `uInc` and `vInc` are null or point to a double each.
  */
 int crgDataSetGetIncrements(int dataSetId, double *uInc, double *vInc);
 
 /*
  Whether the reference line can be closed, and over which u range.
+
+ # Safety
+ `uIsClosed` is null or points to an int; `uCloseMin` and `uCloseMax` are null or
+ point to a double each.
  */
 int crgDataSetGetUtilityDataClosedTrack(int dataSetId, int *uIsClosed, double *uCloseMin, double *uCloseMax);
 
@@ -398,11 +414,17 @@ int crgDataSetModifierSetDouble(int dataSetId, unsigned int optionId, double opt
 
 /*
  Reads an integer modifier of a data set.
+
+ # Safety
+ `optionValue` is null or points to an int.
  */
 int crgDataSetModifierGetInt(int dataSetId, unsigned int optionId, int *optionValue);
 
 /*
  Reads a double modifier of a data set.
+
+ # Safety
+ `optionValue` is null or points to a double.
  */
 int crgDataSetModifierGetDouble(int dataSetId, unsigned int optionId, double *optionValue);
 
@@ -486,11 +508,17 @@ void *crgCalloc(size_t nmemb, size_t size);
 
 /*
  Reallocates memory through the library's allocator hook.
+
+ # Safety
+ `ptr` is null or came from `crgCalloc` or `crgRealloc` and was not freed since.
  */
 void *crgRealloc(void *ptr, size_t size);
 
 /*
  Frees memory through the library's allocator hook.
+
+ # Safety
+ `ptr` is null or came from `crgCalloc` or `crgRealloc` and was not freed since.
  */
 void crgFree(void *ptr);
 
@@ -511,11 +539,17 @@ void crgFreeSetCallback(void (*func)(void *ptr));
 
 /*
  1 if the double is NaN (OpenCRG 1.2.0 API).
+
+ # Safety
+ `dValue` is null or points to a double.
  */
 int crgIsNan(double *dValue);
 
 /*
  1 if the float is NaN (OpenCRG 1.2.0 API).
+
+ # Safety
+ `fValue` is null or points to a float.
  */
 int crgIsNanf(float *fValue);
 
@@ -546,11 +580,17 @@ int crgContactPointOptionSetDouble(int cpId, unsigned int optionId, double optio
 
 /*
  Reads an integer option of a contact point.
+
+ # Safety
+ `optionValue` is null or points to an int.
  */
 int crgContactPointOptionGetInt(int cpId, unsigned int optionId, int *optionValue);
 
 /*
  Reads a double option of a contact point.
+
+ # Safety
+ `optionValue` is null or points to a double.
  */
 int crgContactPointOptionGetDouble(int cpId, unsigned int optionId, double *optionValue);
 
@@ -586,31 +626,49 @@ void crgContactPointSetHistoryForAllPoints(int histSize);
 
 /*
  x/y to u/v.
+
+ # Safety
+ `u` and `v` are null or point to a double each.
  */
 int crgEvalxy2uv(int cpId, double x, double y, double *u, double *v);
 
 /*
  u/v to x/y.
+
+ # Safety
+ `x` and `y` are null or point to a double each.
  */
 int crgEvaluv2xy(int cpId, double u, double v, double *x, double *y);
 
 /*
  u/v to z.
+
+ # Safety
+ `z` is null or points to a double.
  */
 int crgEvaluv2z(int cpId, double u, double v, double *z);
 
 /*
  x/y to z.
+
+ # Safety
+ `z` is null or points to a double.
  */
 int crgEvalxy2z(int cpId, double x, double y, double *z);
 
 /*
  u/v to heading and curvature.
+
+ # Safety
+ `phi` and `curv` are null or point to a double each.
  */
 int crgEvaluv2pk(int cpId, double u, double v, double *phi, double *curv);
 
 /*
  x/y to heading and curvature.
+
+ # Safety
+ `phi` and `curv` are null or point to a double each.
  */
 int crgEvalxy2pk(int cpId, double x, double y, double *phi, double *curv);
 

@@ -28,27 +28,40 @@ pub fn set_free(f: Option<FreeFn>) {
     store(&FREE, f.map(|f| f as usize));
 }
 
+/// Zeroed memory from the hook, or from the C library.
 pub fn calloc(n: usize, size: usize) -> *mut c_void {
     match CALLOC.load(Ordering::SeqCst) {
-        // SAFETY: only ever stored from a `CallocFn`.
+        // SAFETY: calloc accepts any sizes.
         0 => unsafe { libc::calloc(n, size) },
+        // SAFETY: a non-zero value was only ever stored from a `CallocFn`, which the
+        // caller of crgCallocSetCallback promised behaves as calloc.
         f => unsafe { std::mem::transmute::<usize, CallocFn>(f)(n, size) },
     }
 }
 
-pub fn realloc(p: *mut c_void, size: usize) -> *mut c_void {
+/// Memory resized by the hook, or by the C library.
+///
+/// # Safety
+/// `p` is null or came from [`calloc`] or [`realloc`] and was not freed since.
+pub unsafe fn realloc(p: *mut c_void, size: usize) -> *mut c_void {
     match REALLOC.load(Ordering::SeqCst) {
-        // SAFETY: only ever stored from a `ReallocFn`; `p` comes from the caller's
-        // earlier crgCalloc/crgRealloc as the API requires.
+        // SAFETY: `p` is as the contract above says.
         0 => unsafe { libc::realloc(p, size) },
+        // SAFETY: only ever stored from a `ReallocFn` (promised to behave as realloc);
+        // `p` as the contract above says.
         f => unsafe { std::mem::transmute::<usize, ReallocFn>(f)(p, size) },
     }
 }
 
-pub fn free(p: *mut c_void) {
+/// Memory given back to the hook, or to the C library.
+///
+/// # Safety
+/// As for [`realloc`].
+pub unsafe fn free(p: *mut c_void) {
     match FREE.load(Ordering::SeqCst) {
-        // SAFETY: as for realloc.
+        // SAFETY: `p` is as the contract above says.
         0 => unsafe { libc::free(p) },
+        // SAFETY: only ever stored from a `FreeFn` (promised to behave as free).
         f => unsafe { std::mem::transmute::<usize, FreeFn>(f)(p) },
     }
 }

@@ -3,25 +3,21 @@
 //! Each function checks its pointers, looks up its id, calls the core crate and
 //! turns the `Result` into the classic 1/0 (or id/-1) return; the whole body runs
 //! inside [`guard`], so a panic becomes an error return.
+#![allow(non_snake_case)] // the C API's parameter names
 
 use crate::alloc;
 use crate::msg;
 use crate::panic::guard;
 use crate::profile;
+use crate::ptr::{in_str, input, out};
 use crate::registry;
 use crate::report;
 use opencrg::settings::{describe, name, Family, Kind, Value};
 use opencrg::{ContactPoint, Road, Settings};
-use std::ffi::{c_char, c_int, c_uint, c_void, CStr};
+use std::ffi::{c_char, c_int, c_uint, c_void};
 use std::sync::atomic::{AtomicBool, Ordering};
 
 static SUPPRESS_NOT_FOUND: AtomicBool = AtomicBool::new(false);
-
-/// Writes through an out pointer the caller gave us.
-fn put<T>(p: *mut T, v: T) {
-    // SAFETY: every caller checked `p` for null; the API contract makes it point to a T.
-    unsafe { p.write(v) }
-}
 
 #[cold]
 #[inline(never)]
@@ -89,15 +85,19 @@ fn ok(r: opencrg::Result<()>, func: &str) -> c_int {
 // ---------------------------------------------------------------- loading
 
 /// Reads a CRG file; returns the data set id (> 0) or 0.
+///
+/// # Safety
+/// `filename` is null or a NUL-terminated string.
 #[no_mangle]
-pub extern "C" fn crgLoaderReadFile(filename: *const c_char) -> c_int {
+pub unsafe extern "C" fn crgLoaderReadFile(filename: *const c_char) -> c_int {
+    // SAFETY: the contract above.
+    let filename = unsafe { in_str(filename) };
     guard("crgLoaderReadFile", 0, || {
-        if filename.is_null() {
+        let Some(filename) = filename else {
             msg::fatal("crgLoaderReadFile: no file name given");
             return 0;
-        }
-        // SAFETY: a non-null, NUL-terminated string from the caller.
-        let bytes = unsafe { CStr::from_ptr(filename) }.to_bytes();
+        };
+        let bytes = filename.to_bytes();
         let path = std::path::PathBuf::from(<std::ffi::OsStr as std::os::unix::ffi::OsStrExt>::from_bytes(bytes));
         let compat = match profile::compat() {
             Ok(compat) => compat,
@@ -190,14 +190,12 @@ pub extern "C" fn crgGetReleaseInfo() -> *const c_char {
 
 // ---------------------------------------------------------------- data set queries
 
-fn two_out(a: *mut f64, b: *mut f64, f: impl FnOnce() -> Option<(f64, f64)>) -> c_int {
-    if a.is_null() || b.is_null() {
-        return 0;
-    }
+/// Writes the pair `f` gives: 1, or 0 when an output is missing or `f` gives nothing.
+fn two_out(a: Option<&mut f64>, b: Option<&mut f64>, f: impl FnOnce() -> Option<(f64, f64)>) -> c_int {
+    let (Some(a), Some(b)) = (a, b) else { return 0 };
     match f() {
         Some((x, y)) => {
-            put(a, x);
-            put(b, y);
+            (*a, *b) = (x, y);
             1
         }
         None => 0,
@@ -205,42 +203,59 @@ fn two_out(a: *mut f64, b: *mut f64, f: impl FnOnce() -> Option<(f64, f64)>) -> 
 }
 
 /// u range of a data set.
+///
+/// # Safety
+/// `uMin` and `uMax` are null or point to a double each.
 #[no_mangle]
-pub extern "C" fn crgDataSetGetURange(dataSetId: c_int, uMin: *mut f64, uMax: *mut f64) -> c_int {
+pub unsafe extern "C" fn crgDataSetGetURange(dataSetId: c_int, uMin: *mut f64, uMax: *mut f64) -> c_int {
+    // SAFETY: the contract above.
+    let (uMin, uMax) = unsafe { (out(uMin), out(uMax)) };
     guard("crgDataSetGetURange", 0, || two_out(uMin, uMax, || registry::with_dataset(dataSetId, |d| d.road.u_range())))
 }
 
 /// v range of a data set.
+///
+/// # Safety
+/// `vMin` and `vMax` are null or point to a double each.
 #[no_mangle]
-pub extern "C" fn crgDataSetGetVRange(dataSetId: c_int, vMin: *mut f64, vMax: *mut f64) -> c_int {
+pub unsafe extern "C" fn crgDataSetGetVRange(dataSetId: c_int, vMin: *mut f64, vMax: *mut f64) -> c_int {
+    // SAFETY: the contract above.
+    let (vMin, vMax) = unsafe { (out(vMin), out(vMax)) };
     guard("crgDataSetGetVRange", 0, || two_out(vMin, vMax, || registry::with_dataset(dataSetId, |d| d.road.v_range())))
 }
 
 /// u and v increments of a data set.
+///
+/// # Safety
+/// `uInc` and `vInc` are null or point to a double each.
 #[no_mangle]
-pub extern "C" fn crgDataSetGetIncrements(dataSetId: c_int, uInc: *mut f64, vInc: *mut f64) -> c_int {
+pub unsafe extern "C" fn crgDataSetGetIncrements(dataSetId: c_int, uInc: *mut f64, vInc: *mut f64) -> c_int {
+    // SAFETY: the contract above.
+    let (uInc, vInc) = unsafe { (out(uInc), out(vInc)) };
     guard("crgDataSetGetIncrements", 0, || {
         two_out(uInc, vInc, || registry::with_dataset(dataSetId, |d| d.road.increments()))
     })
 }
 
 /// Whether the reference line can be closed, and over which u range.
+///
+/// # Safety
+/// `uIsClosed` is null or points to an int; `uCloseMin` and `uCloseMax` are null or
+/// point to a double each.
 #[no_mangle]
-pub extern "C" fn crgDataSetGetUtilityDataClosedTrack(
+pub unsafe extern "C" fn crgDataSetGetUtilityDataClosedTrack(
     dataSetId: c_int,
     uIsClosed: *mut c_int,
     uCloseMin: *mut f64,
     uCloseMax: *mut f64,
 ) -> c_int {
+    // SAFETY: the contract above.
+    let outs = unsafe { (out(uIsClosed), out(uCloseMin), out(uCloseMax)) };
     guard("crgDataSetGetUtilityDataClosedTrack", 0, || {
-        if uIsClosed.is_null() || uCloseMin.is_null() || uCloseMax.is_null() {
-            return 0;
-        }
+        let (Some(is_closed), Some(close_min), Some(close_max)) = outs else { return 0 };
         match registry::with_dataset(dataSetId, |d| d.road.closed_track_report()) {
             Some((closed, a, b)) => {
-                put(uIsClosed, c_int::from(closed));
-                put(uCloseMin, a);
-                put(uCloseMax, b);
+                (*is_closed, *close_min, *close_max) = (c_int::from(closed), a, b);
                 1
             }
             None => 0,
@@ -268,10 +283,10 @@ fn set_modifier(func: &str, id: c_int, option: c_uint, value: Value) -> c_int {
 
 /// Reads a setting as an integer: 1 when it is set, whatever its type (a double setting
 /// reads as 0, as the reference's separate integer field does).
-fn get_int(table: &Settings, id: c_uint, out: *mut c_int) -> c_int {
-    match table.get_int(id) {
-        Some(v) if !out.is_null() => {
-            put(out, v);
+fn get_int(table: &Settings, id: c_uint, out: Option<&mut c_int>) -> c_int {
+    match (table.get_int(id), out) {
+        (Some(v), Some(out)) => {
+            *out = v;
             1
         }
         _ => 0,
@@ -280,10 +295,10 @@ fn get_int(table: &Settings, id: c_uint, out: *mut c_int) -> c_int {
 
 /// Reads a setting as a double: 1 when it is set, whatever its type (an integer setting
 /// reads as 0.0, as the reference's separate double field does).
-fn get_double(table: &Settings, id: c_uint, out: *mut f64) -> c_int {
-    match table.get_double(id) {
-        Some(v) if !out.is_null() => {
-            put(out, v);
+fn get_double(table: &Settings, id: c_uint, out: Option<&mut f64>) -> c_int {
+    match (table.get_double(id), out) {
+        (Some(v), Some(out)) => {
+            *out = v;
             1
         }
         _ => 0,
@@ -303,14 +318,32 @@ pub extern "C" fn crgDataSetModifierSetDouble(dataSetId: c_int, optionId: c_uint
 }
 
 /// Reads an integer modifier of a data set.
+///
+/// # Safety
+/// `optionValue` is null or points to an int.
 #[no_mangle]
-pub extern "C" fn crgDataSetModifierGetInt(dataSetId: c_int, optionId: c_uint, optionValue: *mut c_int) -> c_int {
+pub unsafe extern "C" fn crgDataSetModifierGetInt(
+    dataSetId: c_int,
+    optionId: c_uint,
+    optionValue: *mut c_int,
+) -> c_int {
+    // SAFETY: the contract above.
+    let optionValue = unsafe { out(optionValue) };
     road_read("crgDataSetModifierGetInt", dataSetId, 0, |r| get_int(r.modifiers(), optionId, optionValue))
 }
 
 /// Reads a double modifier of a data set.
+///
+/// # Safety
+/// `optionValue` is null or points to a double.
 #[no_mangle]
-pub extern "C" fn crgDataSetModifierGetDouble(dataSetId: c_int, optionId: c_uint, optionValue: *mut f64) -> c_int {
+pub unsafe extern "C" fn crgDataSetModifierGetDouble(
+    dataSetId: c_int,
+    optionId: c_uint,
+    optionValue: *mut f64,
+) -> c_int {
+    // SAFETY: the contract above.
+    let optionValue = unsafe { out(optionValue) };
     road_read("crgDataSetModifierGetDouble", dataSetId, 0, |r| get_double(r.modifiers(), optionId, optionValue))
 }
 
@@ -518,15 +551,23 @@ pub extern "C" fn crgCalloc(nmemb: usize, size: usize) -> *mut c_void {
 }
 
 /// Reallocates memory through the library's allocator hook.
+///
+/// # Safety
+/// `ptr` is null or came from `crgCalloc` or `crgRealloc` and was not freed since.
 #[no_mangle]
-pub extern "C" fn crgRealloc(ptr: *mut c_void, size: usize) -> *mut c_void {
-    alloc::realloc(ptr, size)
+pub unsafe extern "C" fn crgRealloc(ptr: *mut c_void, size: usize) -> *mut c_void {
+    // SAFETY: the contract above.
+    unsafe { alloc::realloc(ptr, size) }
 }
 
 /// Frees memory through the library's allocator hook.
+///
+/// # Safety
+/// `ptr` is null or came from `crgCalloc` or `crgRealloc` and was not freed since.
 #[no_mangle]
-pub extern "C" fn crgFree(ptr: *mut c_void) {
-    alloc::free(ptr)
+pub unsafe extern "C" fn crgFree(ptr: *mut c_void) {
+    // SAFETY: the contract above.
+    unsafe { alloc::free(ptr) }
 }
 
 /// Installs the application's calloc (null restores the C library's).
@@ -550,17 +591,23 @@ pub extern "C" fn crgFreeSetCallback(func: Option<unsafe extern "C" fn(ptr: *mut
 }
 
 /// 1 if the double is NaN (OpenCRG 1.2.0 API).
+///
+/// # Safety
+/// `dValue` is null or points to a double.
 #[no_mangle]
-pub extern "C" fn crgIsNan(dValue: *mut f64) -> c_int {
-    // SAFETY: null-checked; the caller passes a pointer to a double.
-    c_int::from(!dValue.is_null() && unsafe { *dValue }.is_nan())
+pub unsafe extern "C" fn crgIsNan(dValue: *mut f64) -> c_int {
+    // SAFETY: the contract above.
+    c_int::from(unsafe { input(dValue) }.is_some_and(|v| v.is_nan()))
 }
 
 /// 1 if the float is NaN (OpenCRG 1.2.0 API).
+///
+/// # Safety
+/// `fValue` is null or points to a float.
 #[no_mangle]
-pub extern "C" fn crgIsNanf(fValue: *mut f32) -> c_int {
-    // SAFETY: null-checked; the caller passes a pointer to a float.
-    c_int::from(!fValue.is_null() && unsafe { *fValue }.is_nan())
+pub unsafe extern "C" fn crgIsNanf(fValue: *mut f32) -> c_int {
+    // SAFETY: the contract above.
+    c_int::from(unsafe { input(fValue) }.is_some_and(|v| v.is_nan()))
 }
 
 // ---------------------------------------------------------------- contact points
@@ -621,14 +668,24 @@ pub extern "C" fn crgContactPointOptionSetDouble(cpId: c_int, optionId: c_uint, 
 }
 
 /// Reads an integer option of a contact point.
+///
+/// # Safety
+/// `optionValue` is null or points to an int.
 #[no_mangle]
-pub extern "C" fn crgContactPointOptionGetInt(cpId: c_int, optionId: c_uint, optionValue: *mut c_int) -> c_int {
+pub unsafe extern "C" fn crgContactPointOptionGetInt(cpId: c_int, optionId: c_uint, optionValue: *mut c_int) -> c_int {
+    // SAFETY: the contract above.
+    let optionValue = unsafe { out(optionValue) };
     cp_call("crgContactPointOptionGetInt", cpId, 0, |cp| get_int(cp.options(), optionId, optionValue))
 }
 
 /// Reads a double option of a contact point.
+///
+/// # Safety
+/// `optionValue` is null or points to a double.
 #[no_mangle]
-pub extern "C" fn crgContactPointOptionGetDouble(cpId: c_int, optionId: c_uint, optionValue: *mut f64) -> c_int {
+pub unsafe extern "C" fn crgContactPointOptionGetDouble(cpId: c_int, optionId: c_uint, optionValue: *mut f64) -> c_int {
+    // SAFETY: the contract above.
+    let optionValue = unsafe { out(optionValue) };
     cp_call("crgContactPointOptionGetDouble", cpId, 0, |cp| get_double(cp.options(), optionId, optionValue))
 }
 
@@ -688,65 +745,82 @@ pub extern "C" fn crgContactPointSetHistoryForAllPoints(histSize: c_int) {
 
 // ---------------------------------------------------------------- evaluation
 
+/// An evaluation giving two values: 1, or 0 (outputs untouched) when an output is
+/// missing, the id unknown or the evaluation refused.
 fn eval2(
     func: &str,
     cp_id: c_int,
-    a: *mut f64,
-    b: *mut f64,
+    a: Option<&mut f64>,
+    b: Option<&mut f64>,
     f: impl FnOnce(&mut ContactPoint) -> opencrg::Result<(f64, f64)>,
 ) -> c_int {
-    if a.is_null() || b.is_null() {
-        return 0;
-    }
+    let (Some(a), Some(b)) = (a, b) else { return 0 };
     cp_call(func, cp_id, 0, |cp| match f(cp) {
         Ok((x, y)) => {
-            put(a, x);
-            put(b, y);
+            (*a, *b) = (x, y);
             1
         }
         Err(_) => 0,
     })
 }
 
-fn eval1(func: &str, cp_id: c_int, out: *mut f64, f: impl FnOnce(&mut ContactPoint) -> opencrg::Result<f64>) -> c_int {
-    if out.is_null() {
-        return 0;
-    }
+/// An evaluation giving one value: 1, or 0 when the output is missing or the id unknown,
+/// or 0 with the output set to 0 when the evaluation is refused.
+fn eval1(
+    func: &str,
+    cp_id: c_int,
+    out: Option<&mut f64>,
+    f: impl FnOnce(&mut ContactPoint) -> opencrg::Result<f64>,
+) -> c_int {
+    let Some(out) = out else { return 0 };
     cp_call(func, cp_id, 0, |cp| match f(cp) {
         Ok(z) => {
-            put(out, z);
+            *out = z;
             1
         }
         Err(_) => {
-            put(out, 0.0);
+            *out = 0.0;
             0
         }
     })
 }
 
 /// x/y to u/v.
+///
+/// # Safety
+/// `u` and `v` are null or point to a double each.
 #[no_mangle]
-pub extern "C" fn crgEvalxy2uv(cpId: c_int, x: f64, y: f64, u: *mut f64, v: *mut f64) -> c_int {
+pub unsafe extern "C" fn crgEvalxy2uv(cpId: c_int, x: f64, y: f64, u: *mut f64, v: *mut f64) -> c_int {
+    // SAFETY: the contract above.
+    let (u, v) = unsafe { (out(u), out(v)) };
     eval2("crgEvalxy2uv", cpId, u, v, |cp| cp.xy_to_uv(x, y))
 }
 
 /// u/v to x/y.
+///
+/// # Safety
+/// `x` and `y` are null or point to a double each.
 #[no_mangle]
-pub extern "C" fn crgEvaluv2xy(cpId: c_int, u: f64, v: f64, x: *mut f64, y: *mut f64) -> c_int {
+pub unsafe extern "C" fn crgEvaluv2xy(cpId: c_int, u: f64, v: f64, x: *mut f64, y: *mut f64) -> c_int {
+    // SAFETY: the contract above.
+    let (x, y) = unsafe { (out(x), out(y)) };
     eval2("crgEvaluv2xy", cpId, x, y, |cp| cp.uv_to_xy(u, v))
 }
 
 /// u/v to z.
+///
+/// # Safety
+/// `z` is null or points to a double.
 #[no_mangle]
-pub extern "C" fn crgEvaluv2z(cpId: c_int, u: f64, v: f64, z: *mut f64) -> c_int {
+pub unsafe extern "C" fn crgEvaluv2z(cpId: c_int, u: f64, v: f64, z: *mut f64) -> c_int {
+    // SAFETY: the contract above.
+    let Some(z) = (unsafe { out(z) }) else { return 0 };
     // The common case first: the calling thread owns the contact point and (u, v) is
     // inside the road. Nothing in it can panic, so it needs no guard, and it makes no
     // call, which keeps it short; everything else takes the general way below.
-    if !z.is_null() {
-        if let Some(Some(value)) = registry::with_owned_cp(cpId, |cp| cp.uv_to_z_plain(u, v)) {
-            put(z, value);
-            return 1;
-        }
+    if let Some(Some(value)) = registry::with_owned_cp(cpId, |cp| cp.uv_to_z_plain(u, v)) {
+        *z = value;
+        return 1;
     }
     uv2z_general(cpId, u, v, z)
 }
@@ -754,24 +828,39 @@ pub extern "C" fn crgEvaluv2z(cpId: c_int, u: f64, v: f64, z: *mut f64) -> c_int
 /// `crgEvaluv2z` for every case but the common one (its own function, so that the
 /// common case needs no stack frame).
 #[inline(never)]
-fn uv2z_general(cpId: c_int, u: f64, v: f64, z: *mut f64) -> c_int {
-    eval1("crgEvaluv2z", cpId, z, |cp| cp.uv_to_z(u, v))
+fn uv2z_general(cpId: c_int, u: f64, v: f64, z: &mut f64) -> c_int {
+    eval1("crgEvaluv2z", cpId, Some(z), |cp| cp.uv_to_z(u, v))
 }
 
 /// x/y to z.
+///
+/// # Safety
+/// `z` is null or points to a double.
 #[no_mangle]
-pub extern "C" fn crgEvalxy2z(cpId: c_int, x: f64, y: f64, z: *mut f64) -> c_int {
+pub unsafe extern "C" fn crgEvalxy2z(cpId: c_int, x: f64, y: f64, z: *mut f64) -> c_int {
+    // SAFETY: the contract above.
+    let z = unsafe { out(z) };
     eval1("crgEvalxy2z", cpId, z, |cp| cp.xy_to_z(x, y))
 }
 
 /// u/v to heading and curvature.
+///
+/// # Safety
+/// `phi` and `curv` are null or point to a double each.
 #[no_mangle]
-pub extern "C" fn crgEvaluv2pk(cpId: c_int, u: f64, v: f64, phi: *mut f64, curv: *mut f64) -> c_int {
+pub unsafe extern "C" fn crgEvaluv2pk(cpId: c_int, u: f64, v: f64, phi: *mut f64, curv: *mut f64) -> c_int {
+    // SAFETY: the contract above.
+    let (phi, curv) = unsafe { (out(phi), out(curv)) };
     eval2("crgEvaluv2pk", cpId, phi, curv, |cp| cp.uv_to_pk(u, v))
 }
 
 /// x/y to heading and curvature.
+///
+/// # Safety
+/// `phi` and `curv` are null or point to a double each.
 #[no_mangle]
-pub extern "C" fn crgEvalxy2pk(cpId: c_int, x: f64, y: f64, phi: *mut f64, curv: *mut f64) -> c_int {
+pub unsafe extern "C" fn crgEvalxy2pk(cpId: c_int, x: f64, y: f64, phi: *mut f64, curv: *mut f64) -> c_int {
+    // SAFETY: the contract above.
+    let (phi, curv) = unsafe { (out(phi), out(curv)) };
     eval2("crgEvalxy2pk", cpId, phi, curv, |cp| cp.xy_to_pk(x, y))
 }

@@ -2,38 +2,13 @@
 //! `crgBaseLib.h`): batch evaluation, surface normals and raw data access.
 //!
 //! Pointers come from C: every one is checked for null and turned into a slice of the
-//! length the caller gives, through the two helpers below.
+//! length the caller gives, through the helpers of `ptr`.
+#![allow(non_snake_case)] // the C API's parameter names
 
 use crate::api::{cp_call, road_read};
+use crate::ptr::{in_array as input, out, out_array as output};
 use opencrg::ContactPoint;
 use std::ffi::c_int;
-
-/// `n` values at `p` as a slice; `None` for a null pointer (an empty slice for n = 0).
-///
-/// # Safety
-/// A non-null `p` must point to `n` readable values that stay valid and unchanged for `'a`.
-unsafe fn input<'a, T>(p: *const T, n: usize) -> Option<&'a [T]> {
-    match (p.is_null(), n) {
-        (_, 0) => Some(&[]),
-        (true, _) => None,
-        // SAFETY: the caller's promise, passed on from the C API's contract.
-        (false, _) => Some(unsafe { std::slice::from_raw_parts(p, n) }),
-    }
-}
-
-/// `n` values at `p` as a writable slice; `None` for a null pointer.
-///
-/// # Safety
-/// A non-null `p` must point to `n` writable values, valid for `'a`, that nothing else
-/// reads or writes meanwhile.
-unsafe fn output<'a, T>(p: *mut T, n: usize) -> Option<&'a mut [T]> {
-    match (p.is_null(), n) {
-        (_, 0) => Some(&mut []),
-        (true, _) => None,
-        // SAFETY: the caller's promise, passed on from the C API's contract.
-        (false, _) => Some(unsafe { std::slice::from_raw_parts_mut(p, n) }),
-    }
-}
 
 /// Runs a batch on a contact point: two inputs, `K` outputs of `n` values each.
 fn batch<const K: usize>(
@@ -148,11 +123,10 @@ pub unsafe extern "C" fn crgEvalxy2pkN(
 
 /// Writes an elevation and a normal through the pointers that are not NULL; 1, or 0
 /// (and nothing written) when the evaluation failed.
-fn put_normal(answer: opencrg::Result<(f64, [f64; 3])>, z: *mut f64, n: [*mut f64; 3]) -> c_int {
-    let Ok((value, normal)) = answer else { return 0 };
-    for (p, v) in std::iter::once((z, value)).chain(n.into_iter().zip(normal)) {
-        // SAFETY: one double behind every non-null pointer (the contract).
-        if let Some([slot]) = unsafe { output(p, 1) } {
+fn put_normal(answer: opencrg::Result<(f64, [f64; 3])>, outs: [Option<&mut f64>; 4]) -> c_int {
+    let Ok((value, [nx, ny, nz])) = answer else { return 0 };
+    for (slot, v) in outs.into_iter().zip([value, nx, ny, nz]) {
+        if let Some(slot) = slot {
             *slot = v;
         }
     }
@@ -177,7 +151,9 @@ pub unsafe extern "C" fn crgEvaluv2zn(
     ny: *mut f64,
     nz: *mut f64,
 ) -> c_int {
-    cp_call("crgEvaluv2zn", cpId, 0, |cp| put_normal(cp.uv_to_normal(u, v), z, [nx, ny, nz]))
+    // SAFETY: the contract above.
+    let outs = unsafe { [out(z), out(nx), out(ny), out(nz)] };
+    cp_call("crgEvaluv2zn", cpId, 0, |cp| put_normal(cp.uv_to_normal(u, v), outs))
 }
 
 /// Elevation and normal at the point (x, y): those of `crgEvaluv2zn` at the (u, v) that
@@ -195,7 +171,9 @@ pub unsafe extern "C" fn crgEvalxy2zn(
     ny: *mut f64,
     nz: *mut f64,
 ) -> c_int {
-    cp_call("crgEvalxy2zn", cpId, 0, |cp| put_normal(cp.xy_to_normal(x, y), z, [nx, ny, nz]))
+    // SAFETY: the contract above.
+    let outs = unsafe { [out(z), out(nx), out(ny), out(nz)] };
+    cp_call("crgEvalxy2zn", cpId, 0, |cp| put_normal(cp.xy_to_normal(x, y), outs))
 }
 
 /// The number of cross sections (u) and long sections (v) of the elevation grid.
