@@ -11,6 +11,7 @@ mod constants;
 mod extensions;
 mod lock;
 mod msg;
+mod owner;
 mod panic;
 mod profile;
 mod ptr;
