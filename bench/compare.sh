@@ -16,7 +16,7 @@ threads=${THREADS:-$(nproc)}
 repeat=${REPEAT:-3}
 out=$(mktemp -d)
 
-cargo build --release -q -p opencrg-sys
+cargo build --release -q -p opencrg-capi
 cargo run --release -q -p opencrg --example make_bench_roads -- "$roads" >/dev/null
 cc -O2 -Iinclude bench/crg_bench.c target/release/libopencrg.a -lm -lpthread -ldl -o "$out/bench_opencrg"
 libs=(opencrg)

@@ -108,7 +108,7 @@
 #define dCrgCpOptionRefLineContinue 13
 
 /*
- Option: maximum number of warning messages [integer].
+ Option: maximum number of warning messages (integer).
  */
 #define dCrgCpOptionWarnMsgs 14
 
@@ -128,12 +128,12 @@
 #define dCrgCpOptionCheckTol 17
 
 /*
- Option: local curvature check [integer].
+ Option: local curvature check (integer).
  */
 #define dCrgCpOptionWarnCurvLocal 18
 
 /*
- Option: global curvature check [integer].
+ Option: global curvature check (integer).
  */
 #define dCrgCpOptionWarnCurvGlobal 19
 
@@ -183,32 +183,32 @@
 #define dCrgCurvRefLine 1
 
 /*
- Modifier: scale factor of the elevation grid [double].
+ Modifier: scale factor of the elevation grid (double).
  */
 #define dCrgModScaleZ 21
 
 /*
- Modifier: scale factor of the slope [double].
+ Modifier: scale factor of the slope (double).
  */
 #define dCrgModScaleSlope 22
 
 /*
- Modifier: scale factor of the banking [double].
+ Modifier: scale factor of the banking (double).
  */
 #define dCrgModScaleBank 23
 
 /*
- Modifier: scale factor of the length [double].
+ Modifier: scale factor of the length (double).
  */
 #define dCrgModScaleLength 24
 
 /*
- Modifier: scale factor of the width [double].
+ Modifier: scale factor of the width (double).
  */
 #define dCrgModScaleWidth 25
 
 /*
- Modifier: scale factor of the reference line curvature [double].
+ Modifier: scale factor of the reference line curvature (double).
  */
 #define dCrgModScaleCurvature 26
 
@@ -228,7 +228,7 @@
 #define dCrgModRefPointV 29
 
 /*
- Modifier: reference point v fraction [double].
+ Modifier: reference point v fraction (double).
  */
 #define dCrgModRefPointVFrac 30
 
@@ -243,7 +243,7 @@
 #define dCrgModRefPointU 32
 
 /*
- Modifier: reference point u fraction [double].
+ Modifier: reference point u fraction (double).
  */
 #define dCrgModRefPointUFrac 33
 
@@ -679,7 +679,7 @@ int crgEvalxy2pk(int cpId, double x, double y, double *phi, double *curv);
  (crgDataSetGetGrid..., crgDataSetGetRefLine).
  ======================================================================================
 
- Elevation of `n` points (u[i], v[i]) into z[i]: the same answers as `crgEvaluv2z`
+ Elevation of `n` points (`u[i]`, `v[i]`) into `z[i]`: the same answers as `crgEvaluv2z`
  called on each point in order; NaN where that call fails. Returns how many succeeded.
 
  # Safety
@@ -688,7 +688,7 @@ int crgEvalxy2pk(int cpId, double x, double y, double *phi, double *curv);
 int crgEvaluv2zN(int cpId, int n, const double *u, const double *v, double *z);
 
 /*
- Elevation of `n` points (x[i], y[i]), as `crgEvalxy2z` on each in order.
+ Elevation of `n` points (`x[i]`, `y[i]`), as `crgEvalxy2z` on each in order.
 
  # Safety
  `x`, `y` and `z` point to `n` doubles each.
@@ -696,7 +696,7 @@ int crgEvaluv2zN(int cpId, int n, const double *u, const double *v, double *z);
 int crgEvalxy2zN(int cpId, int n, const double *x, const double *y, double *z);
 
 /*
- x/y of `n` points (u[i], v[i]), as `crgEvaluv2xy` on each in order.
+ x/y of `n` points (`u[i]`, `v[i]`), as `crgEvaluv2xy` on each in order.
 
  # Safety
  `u`, `v`, `x` and `y` point to `n` doubles each.
@@ -704,7 +704,7 @@ int crgEvalxy2zN(int cpId, int n, const double *x, const double *y, double *z);
 int crgEvaluv2xyN(int cpId, int n, const double *u, const double *v, double *x, double *y);
 
 /*
- u/v of `n` points (x[i], y[i]), as `crgEvalxy2uv` on each in order (the search
+ u/v of `n` points (`x[i]`, `y[i]`), as `crgEvalxy2uv` on each in order (the search
  history carries from point to point).
 
  # Safety
@@ -713,7 +713,7 @@ int crgEvaluv2xyN(int cpId, int n, const double *u, const double *v, double *x, 
 int crgEvalxy2uvN(int cpId, int n, const double *x, const double *y, double *u, double *v);
 
 /*
- Heading and curvature of `n` points (u[i], v[i]), as `crgEvaluv2pk` on each in order.
+ Heading and curvature of `n` points (`u[i]`, `v[i]`), as `crgEvaluv2pk` on each in order.
 
  # Safety
  `u`, `v`, `phi` and `curv` point to `n` doubles each.
@@ -721,7 +721,7 @@ int crgEvalxy2uvN(int cpId, int n, const double *x, const double *y, double *u, 
 int crgEvaluv2pkN(int cpId, int n, const double *u, const double *v, double *phi, double *curv);
 
 /*
- Heading and curvature of `n` points (x[i], y[i]), as `crgEvalxy2pk` on each in order.
+ Heading and curvature of `n` points (`x[i]`, `y[i]`), as `crgEvalxy2pk` on each in order.
 
  # Safety
  `x`, `y`, `phi` and `curv` point to `n` doubles each.
@@ -768,7 +768,7 @@ int crgDataSetGetGridSize(int dataSetId, int *nU, int *nV);
 int crgDataSetGetGridV(int dataSetId, double *v, int nV);
 
 /*
- The elevation grid into z[i * nV + j] (cross section i, long section j), NaN kept,
+ The elevation grid into `z[i * nV + j]` (cross section i, long section j), NaN kept,
  the road's z offset included: the surface evaluation adds the reference line z and
  the banking to these values. Returns 1, or 0 when `nU` x `nV` is not the grid's size,
  `z` is NULL or the data set unknown.

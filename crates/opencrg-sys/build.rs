@@ -1,26 +1,5 @@
-//! Builds the C shim that formats `crgMsgPrint`'s variadic arguments, and gives the
-//! shared library its versioned soname (`libopencrg.so.MAJOR`) with a link of that name
-//! beside the built library, so programs linked in the build tree find it at run time.
+//! Builds the C shim that formats `crgMsgPrint`'s variadic arguments.
 fn main() {
     println!("cargo:rerun-if-changed=csrc/msg_shim.c");
     cc::Build::new().file("csrc/msg_shim.c").warnings(true).extra_warnings(true).compile("opencrg_shim");
-    if std::env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("linux") {
-        let major = std::env::var("CARGO_PKG_VERSION_MAJOR").unwrap_or_else(|_| "2".into());
-        let soname = format!("libopencrg.so.{major}");
-        println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,{soname}");
-        // The variadic crgMsgPrint lives in the C shim; rustc exports only Rust symbols.
-        let map = std::path::Path::new(&std::env::var("CARGO_MANIFEST_DIR").unwrap()).join("csrc/exports.map");
-        println!("cargo:rerun-if-changed=csrc/exports.map");
-        println!("cargo:rustc-cdylib-link-arg=-Wl,--version-script={}", map.display());
-        // OUT_DIR is <profile dir>/build/<crate>-<hash>/out; the library lands in <profile dir>.
-        if let Some(profile_dir) = std::env::var_os("OUT_DIR")
-            .map(std::path::PathBuf::from)
-            .and_then(|o| o.ancestors().nth(3).map(|p| p.to_path_buf()))
-        {
-            let link = profile_dir.join(&soname);
-            if std::fs::symlink_metadata(&link).is_err() {
-                let _ = std::os::unix::fs::symlink("libopencrg.so", &link);
-            }
-        }
-    }
 }

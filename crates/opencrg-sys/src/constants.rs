@@ -41,7 +41,7 @@ pub const dCrgCpOptionRefLineClose: c_uint = 11;
 pub const dCrgCpOptionRefLineFar: c_uint = 12;
 /// Option: reference line continuation [integer, dCrgRefLine*].
 pub const dCrgCpOptionRefLineContinue: c_uint = 13;
-/// Option: maximum number of warning messages [integer].
+/// Option: maximum number of warning messages (integer).
 pub const dCrgCpOptionWarnMsgs: c_uint = 14;
 /// Option: expected minimum accuracy [double, m].
 pub const dCrgCpOptionCheckEps: c_uint = 15;
@@ -49,9 +49,9 @@ pub const dCrgCpOptionCheckEps: c_uint = 15;
 pub const dCrgCpOptionCheckInc: c_uint = 16;
 /// Option: expected absolute tolerance [double, m].
 pub const dCrgCpOptionCheckTol: c_uint = 17;
-/// Option: local curvature check [integer].
+/// Option: local curvature check (integer).
 pub const dCrgCpOptionWarnCurvLocal: c_uint = 18;
-/// Option: global curvature check [integer].
+/// Option: global curvature check (integer).
 pub const dCrgCpOptionWarnCurvGlobal: c_uint = 19;
 
 /// Border mode: refuse the evaluation.
@@ -75,17 +75,17 @@ pub const dCrgCurvLateral: c_int = 0;
 /// Curvature mode: curvature of the reference line.
 pub const dCrgCurvRefLine: c_int = 1;
 
-/// Modifier: scale factor of the elevation grid [double].
+/// Modifier: scale factor of the elevation grid (double).
 pub const dCrgModScaleZ: c_uint = 21;
-/// Modifier: scale factor of the slope [double].
+/// Modifier: scale factor of the slope (double).
 pub const dCrgModScaleSlope: c_uint = 22;
-/// Modifier: scale factor of the banking [double].
+/// Modifier: scale factor of the banking (double).
 pub const dCrgModScaleBank: c_uint = 23;
-/// Modifier: scale factor of the length [double].
+/// Modifier: scale factor of the length (double).
 pub const dCrgModScaleLength: c_uint = 24;
-/// Modifier: scale factor of the width [double].
+/// Modifier: scale factor of the width (double).
 pub const dCrgModScaleWidth: c_uint = 25;
-/// Modifier: scale factor of the reference line curvature [double].
+/// Modifier: scale factor of the reference line curvature (double).
 pub const dCrgModScaleCurvature: c_uint = 26;
 /// Modifier: NaN handling of the grid [integer, dCrgGridNaN*].
 pub const dCrgModGridNaNMode: c_uint = 27;
@@ -93,13 +93,13 @@ pub const dCrgModGridNaNMode: c_uint = 27;
 pub const dCrgModGridNaNOffset: c_uint = 28;
 /// Modifier: reference point v [double, m].
 pub const dCrgModRefPointV: c_uint = 29;
-/// Modifier: reference point v fraction [double].
+/// Modifier: reference point v fraction (double).
 pub const dCrgModRefPointVFrac: c_uint = 30;
 /// Modifier: reference point v offset [double, m].
 pub const dCrgModRefPointVOffset: c_uint = 31;
 /// Modifier: reference point u [double, m].
 pub const dCrgModRefPointU: c_uint = 32;
-/// Modifier: reference point u fraction [double].
+/// Modifier: reference point u fraction (double).
 pub const dCrgModRefPointUFrac: c_uint = 33;
 /// Modifier: reference point u offset [double, m].
 pub const dCrgModRefPointUOffset: c_uint = 34;

@@ -37,7 +37,7 @@ fn batch<const K: usize>(
 /// (crgDataSetGetGrid..., crgDataSetGetRefLine).
 /// ======================================================================================
 ///
-/// Elevation of `n` points (u[i], v[i]) into z[i]: the same answers as `crgEvaluv2z`
+/// Elevation of `n` points (`u[i]`, `v[i]`) into `z[i]`: the same answers as `crgEvaluv2z`
 /// called on each point in order; NaN where that call fails. Returns how many succeeded.
 ///
 /// # Safety
@@ -47,7 +47,7 @@ pub unsafe extern "C" fn crgEvaluv2zN(cpId: c_int, n: c_int, u: *const f64, v: *
     batch("crgEvaluv2zN", cpId, n, [u, v], [z], |cp, [u, v], [z]| cp.uv_to_z_many(u, v, z))
 }
 
-/// Elevation of `n` points (x[i], y[i]), as `crgEvalxy2z` on each in order.
+/// Elevation of `n` points (`x[i]`, `y[i]`), as `crgEvalxy2z` on each in order.
 ///
 /// # Safety
 /// `x`, `y` and `z` point to `n` doubles each.
@@ -56,7 +56,7 @@ pub unsafe extern "C" fn crgEvalxy2zN(cpId: c_int, n: c_int, x: *const f64, y: *
     batch("crgEvalxy2zN", cpId, n, [x, y], [z], |cp, [x, y], [z]| cp.xy_to_z_many(x, y, z))
 }
 
-/// x/y of `n` points (u[i], v[i]), as `crgEvaluv2xy` on each in order.
+/// x/y of `n` points (`u[i]`, `v[i]`), as `crgEvaluv2xy` on each in order.
 ///
 /// # Safety
 /// `u`, `v`, `x` and `y` point to `n` doubles each.
@@ -72,7 +72,7 @@ pub unsafe extern "C" fn crgEvaluv2xyN(
     batch("crgEvaluv2xyN", cpId, n, [u, v], [x, y], |cp, [u, v], [x, y]| cp.uv_to_xy_many(u, v, x, y))
 }
 
-/// u/v of `n` points (x[i], y[i]), as `crgEvalxy2uv` on each in order (the search
+/// u/v of `n` points (`x[i]`, `y[i]`), as `crgEvalxy2uv` on each in order (the search
 /// history carries from point to point).
 ///
 /// # Safety
@@ -89,7 +89,7 @@ pub unsafe extern "C" fn crgEvalxy2uvN(
     batch("crgEvalxy2uvN", cpId, n, [x, y], [u, v], |cp, [x, y], [u, v]| cp.xy_to_uv_many(x, y, u, v))
 }
 
-/// Heading and curvature of `n` points (u[i], v[i]), as `crgEvaluv2pk` on each in order.
+/// Heading and curvature of `n` points (`u[i]`, `v[i]`), as `crgEvaluv2pk` on each in order.
 ///
 /// # Safety
 /// `u`, `v`, `phi` and `curv` point to `n` doubles each.
@@ -105,7 +105,7 @@ pub unsafe extern "C" fn crgEvaluv2pkN(
     batch("crgEvaluv2pkN", cpId, n, [u, v], [phi, curv], |cp, [u, v], [p, c]| cp.uv_to_pk_many(u, v, p, c))
 }
 
-/// Heading and curvature of `n` points (x[i], y[i]), as `crgEvalxy2pk` on each in order.
+/// Heading and curvature of `n` points (`x[i]`, `y[i]`), as `crgEvalxy2pk` on each in order.
 ///
 /// # Safety
 /// `x`, `y`, `phi` and `curv` point to `n` doubles each.
@@ -214,7 +214,7 @@ pub unsafe extern "C" fn crgDataSetGetGridV(dataSetId: c_int, v: *mut f64, nV: c
     })
 }
 
-/// The elevation grid into z[i * nV + j] (cross section i, long section j), NaN kept,
+/// The elevation grid into `z[i * nV + j]` (cross section i, long section j), NaN kept,
 /// the road's z offset included: the surface evaluation adds the reference line z and
 /// the banking to these values. Returns 1, or 0 when `nU` x `nV` is not the grid's size,
 /// `z` is NULL or the data set unknown.
