@@ -57,176 +57,22 @@ impl Road {
         Road::build(header, data, options.into())
     }
 
+    /// A road from a header and its data: the layout of the channels, the u axis, the
+    /// records, the reference line, then what is derived from them.
     fn build(header: Header, data: DataSource, load: LoadOptions) -> Result<Road> {
         let path = data.path.clone();
         let err = |field: &str, msg: String| Error::format(&path, Location::File, field, msg);
-        let p = &header.road;
-
-        // --- long sections ---
-        let mut sections: Vec<(f64, usize, bool)> = Vec::new();
-        let mut cols = ColumnMap::default();
-        for (col, ch) in header.channels.iter().enumerate() {
-            match *ch {
-                Channel::SectionAt(v) => sections.push((v, col, true)),
-                Channel::SectionIndex(n) => sections.push((n, col, false)),
-                Channel::RefX => cols.x = Some(col),
-                Channel::RefY => cols.y = Some(col),
-                Channel::RefU => cols.u = Some(col),
-                Channel::RefPhi => cols.phi = Some(col),
-                Channel::RefBank => cols.bank = Some(col),
-                Channel::RefSlope => cols.slope = Some(col),
-            }
-        }
-        if cols.x.is_some() != cols.y.is_some() {
-            return Err(err("$KD_Definition", "reference line x and y channels must be defined together".into()));
-        }
-        if sections.len() < 2 {
-            return Err(err(
-                "$KD_Definition",
-                format!("{} long section(s) defined, at least 2 are needed", sections.len()),
-            ));
-        }
-        let explicit = sections[0].2;
-        if sections.iter().any(|s| s.2 != explicit) {
-            return Err(err("$KD_Definition", "long sections mix 'at v = X' and numbered definitions".into()));
-        }
-        sections.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let nv = sections.len();
-        let mut v: Vec<f64> = sections.iter().map(|s| s.0).collect();
-        let (v_first, v_last, v_inc, layout);
-        if explicit {
-            let gaps = v.windows(2).map(|w| w[1] - w[0]);
-            let dv_min = gaps.clone().fold(f64::INFINITY, f64::min);
-            let dv_max = gaps.fold(f64::NEG_INFINITY, f64::max);
-            if dv_min < 1e-6 {
-                return Err(err("$KD_Definition", "two long sections are at the same v (spacing below 1e-6 m)".into()));
-            }
-            let uniform = (dv_max - dv_min) / dv_min < 1e-3;
-            v_inc = if uniform { (v[nv - 1] - v[0]) / (nv - 1) as f64 } else { p.v_increment.unwrap_or(0.01) };
-            // The v borders are the header's values (0 when absent), as the reference
-            // keeps them; only even spacing moves the right border to the first section.
-            v_first = if uniform { v[0] } else { p.v_right.unwrap_or(0.0) };
-            v_last = p.v_left.unwrap_or(0.0);
-            layout = VLayout::Explicit;
-        } else {
-            if v.iter().enumerate().any(|(i, &n)| n != (i + 1) as f64) {
-                return Err(err("$KD_Definition", format!("long sections must be numbered 1 to {nv}")));
-            }
-            v_inc = p.v_increment.unwrap_or(0.01);
-            if !(v_inc > 0.0) {
-                return Err(err("LONG_SECTION_V_INCREMENT", format!("increment {v_inc} must be positive")));
-            }
-            v_first = p.v_right.unwrap_or(0.0);
-            for (i, x) in v.iter_mut().enumerate() {
-                *x = v_first + i as f64 * v_inc;
-            }
-            v_last = p.v_left.unwrap_or(0.0);
-            layout = if header.top_file_numbers_sections { VLayout::Indexed } else { VLayout::Explicit };
-        }
-
-        // --- u axis ---
-        let u_first = p.start_u.unwrap_or(0.0);
-        let u_inc = p.increment.unwrap_or(0.01);
-        if !(u_inc > 0.0) {
-            return Err(err("REFERENCE_LINE_INCREMENT", format!("increment {u_inc} must be positive")));
-        }
-        if let Some(end) = p.end_u {
-            if end <= u_first {
-                return Err(err("REFERENCE_LINE_END_U", format!("end u {end} is not after start u {u_first}")));
-            }
-        }
-
-        // --- records ---
-        let nch = header.channels.len();
-        let bytes = &data.bytes[data.offset..];
-        let format = header.format;
-        let record_len = format.field_width() * nch;
-        let max_records = if format.is_text() {
-            usize::MAX
-        } else {
-            let declared = ((p.end_u.unwrap_or(u_first) - u_first) / u_inc + 0.5).floor() + 1.0;
-            let available = bytes.len() / record_len.max(1);
-            if declared > available as f64 {
-                return Err(Error::format(
-                    &path,
-                    Location::File,
-                    "data section",
-                    format!("holds {available} records of {record_len} bytes, the header declares {declared}"),
-                ));
-            }
-            declared as usize
-        };
-        let estimate = if format.is_text() { bytes.len() / (record_len + 1).max(1) } else { max_records };
-        if estimate.saturating_mul(nv) > MAX_CELLS {
-            return Err(err("data section", format!("{estimate} x {nv} cells exceed the supported size")));
-        }
-        let mut z: Vec<f32> = crate::memory::large_vec(estimate.saturating_mul(nv));
-        let mut b = Builder::new(&cols, estimate);
-        let section_cols: Vec<usize> = sections.iter().map(|s| s.1).collect();
-        // Decoded pages of a mapped file are handed back as decoding advances, so the
-        // file and the grid are never both resident.
-        const RELEASE_STEP: usize = 8 << 20;
-        let mut released = 0;
-        let decoded = records::decode(format, nch, bytes, max_records, |i, rec, end| {
-            z.extend(section_cols.iter().map(|&c| rec[c] as f32));
-            if end - released >= RELEASE_STEP {
-                data.bytes.release(data.offset + released, data.offset + end);
-                released = end;
-            }
-            b.push(i, rec)
-        })?;
-        let nu = match decoded {
-            Ok(n) => n,
-            Err(Truncated { record, channels_read }) => {
-                return Err(Error::format(
-                    &path,
-                    Location::Record { record, channel: Some(channels_read + 1) },
-                    "data section",
-                    format!("record ends after {channels_read} of {nch} channels"),
-                ))
-            }
-        };
-        if nu < 2 {
-            return Err(err("data section", format!("{nu} cross section(s) found, at least 2 are needed")));
-        }
-        if let Some(bad) = b.first_nan_heading {
-            return Err(Error::format(
-                &path,
-                Location::Record { record: bad + 1, channel: cols.phi.map(|c| c + 1) },
-                "reference line phi",
-                "heading is NaN",
-            ));
-        }
-        // NaN in the slope or banking channel loads, as with the reference (PyOpenCRG writes
-        // NaN as the first value, which the integration never reads); elsewhere it makes the
-        // elevations around it NaN, which deserves a warning.
-        let mut channel_warnings = Vec::new();
-        if let (true, Some(end)) = (format.is_text(), p.end_u) {
-            let declared = ((end - u_first) / u_inc + 0.5).floor() + 1.0;
-            if (nu as f64) < declared {
-                channel_warnings.push(format!(
-                    "{}: data section: {nu} records where REFERENCE_LINE_END_U = {end} declares {declared}; \
-                     the road ends at u = {}",
-                    path.display(),
-                    u_first + (nu - 1) as f64 * u_inc
-                ));
-            }
-        }
-        for (values, col, name) in [(&b.slope, cols.slope, "slope"), (&b.bank, cols.bank, "banking")] {
-            if let Some(i) = values.iter().skip(1).position(|v| v.is_nan()) {
-                channel_warnings.push(format!(
-                    "{}: record {}, channel {}: reference line {name} is NaN; elevations there will be NaN",
-                    path.display(),
-                    i + 2,
-                    col.map_or(0, |c| c + 1)
-                ));
-            }
-        }
+        let (cols, sections) = channel_layout(&header, &err)?;
+        let (u_first, u_inc) = u_axis(&header.road, &err)?;
+        let (z, b, nu) = read_records(&header, &data, &cols, &sections, u_first, u_inc)?;
+        let warnings = channel_warnings(&header, &path, &cols, &b, nu, u_first, u_inc);
+        let LongSections { v, v_first, v_last, v_inc, layout, .. } = sections;
+        let nv = v.len();
         let grid = Grid { nu, nv, z, mean: 0.0, v, v_first, v_last, v_inc, layout, v_table: Vec::new() };
-        let line =
-            refline::RefLine::from_records(p, &cols, b, nu, u_first, u_inc).map_err(|m| err("reference line", m))?;
+        let line = refline::RefLine::from_records(&header.road, &cols, b, nu, u_first, u_inc)
+            .map_err(|m| err("reference line", m))?;
         let mut header = header;
-        header.warnings.extend(channel_warnings);
+        header.warnings.extend(warnings);
         let options = header.options.clone();
         let modifiers = header.modifiers.clone();
         let mut road = Road {
@@ -246,6 +92,210 @@ impl Road {
         road.prepare();
         Ok(road)
     }
+}
+
+/// The long sections of a file: their columns and v positions, in v order.
+struct LongSections {
+    columns: Vec<usize>,
+    v: Vec<f64>,
+    v_first: f64,
+    v_last: f64,
+    v_inc: f64,
+    layout: VLayout,
+}
+
+/// Where each channel is in a record, and the long sections' layout.
+fn channel_layout(header: &Header, err: &impl Fn(&str, String) -> Error) -> Result<(ColumnMap, LongSections)> {
+    let p = &header.road;
+    let mut sections: Vec<(f64, usize, bool)> = Vec::new();
+    let mut cols = ColumnMap::default();
+    for (col, ch) in header.channels.iter().enumerate() {
+        match *ch {
+            Channel::SectionAt(v) => sections.push((v, col, true)),
+            Channel::SectionIndex(n) => sections.push((n, col, false)),
+            Channel::RefX => cols.x = Some(col),
+            Channel::RefY => cols.y = Some(col),
+            Channel::RefU => cols.u = Some(col),
+            Channel::RefPhi => cols.phi = Some(col),
+            Channel::RefBank => cols.bank = Some(col),
+            Channel::RefSlope => cols.slope = Some(col),
+        }
+    }
+    if cols.x.is_some() != cols.y.is_some() {
+        return Err(err("$KD_Definition", "reference line x and y channels must be defined together".into()));
+    }
+    if sections.len() < 2 {
+        return Err(err(
+            "$KD_Definition",
+            format!("{} long section(s) defined, at least 2 are needed", sections.len()),
+        ));
+    }
+    let explicit = sections[0].2;
+    if sections.iter().any(|s| s.2 != explicit) {
+        return Err(err("$KD_Definition", "long sections mix 'at v = X' and numbered definitions".into()));
+    }
+    sections.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let nv = sections.len();
+    let mut v: Vec<f64> = sections.iter().map(|s| s.0).collect();
+    let (v_first, v_last, v_inc, layout);
+    if explicit {
+        let gaps = v.windows(2).map(|w| w[1] - w[0]);
+        let dv_min = gaps.clone().fold(f64::INFINITY, f64::min);
+        let dv_max = gaps.fold(f64::NEG_INFINITY, f64::max);
+        if dv_min < 1e-6 {
+            return Err(err("$KD_Definition", "two long sections are at the same v (spacing below 1e-6 m)".into()));
+        }
+        let uniform = (dv_max - dv_min) / dv_min < 1e-3;
+        v_inc = if uniform { (v[nv - 1] - v[0]) / (nv - 1) as f64 } else { p.v_increment.unwrap_or(0.01) };
+        // The v borders are the header's values (0 when absent), as the reference
+        // keeps them; only even spacing moves the right border to the first section.
+        v_first = if uniform { v[0] } else { p.v_right.unwrap_or(0.0) };
+        v_last = p.v_left.unwrap_or(0.0);
+        layout = VLayout::Explicit;
+    } else {
+        if v.iter().enumerate().any(|(i, &n)| n != (i + 1) as f64) {
+            return Err(err("$KD_Definition", format!("long sections must be numbered 1 to {nv}")));
+        }
+        v_inc = p.v_increment.unwrap_or(0.01);
+        if !(v_inc > 0.0) {
+            return Err(err("LONG_SECTION_V_INCREMENT", format!("increment {v_inc} must be positive")));
+        }
+        v_first = p.v_right.unwrap_or(0.0);
+        for (i, x) in v.iter_mut().enumerate() {
+            *x = v_first + i as f64 * v_inc;
+        }
+        v_last = p.v_left.unwrap_or(0.0);
+        layout = if header.top_file_numbers_sections { VLayout::Indexed } else { VLayout::Explicit };
+    }
+    let columns = sections.iter().map(|s| s.1).collect();
+    Ok((cols, LongSections { columns, v, v_first, v_last, v_inc, layout }))
+}
+
+/// First u and u increment.
+fn u_axis(p: &RoadParams, err: &impl Fn(&str, String) -> Error) -> Result<(f64, f64)> {
+    let u_first = p.start_u.unwrap_or(0.0);
+    let u_inc = p.increment.unwrap_or(0.01);
+    if !(u_inc > 0.0) {
+        return Err(err("REFERENCE_LINE_INCREMENT", format!("increment {u_inc} must be positive")));
+    }
+    if let Some(end) = p.end_u {
+        if end <= u_first {
+            return Err(err("REFERENCE_LINE_END_U", format!("end u {end} is not after start u {u_first}")));
+        }
+    }
+    Ok((u_first, u_inc))
+}
+
+/// Decodes the records: the grid (cross section by cross section), the reference line
+/// channels, and the number of cross sections.
+fn read_records(
+    header: &Header,
+    data: &DataSource,
+    cols: &ColumnMap,
+    sections: &LongSections,
+    u_first: f64,
+    u_inc: f64,
+) -> Result<(Vec<f32>, Builder, usize)> {
+    let path = &data.path;
+    let err = |field: &str, msg: String| Error::format(path, Location::File, field, msg);
+    let p = &header.road;
+    let nv = sections.v.len();
+    let nch = header.channels.len();
+    let bytes = &data.bytes[data.offset..];
+    let format = header.format;
+    let record_len = format.field_width() * nch;
+    let max_records = if format.is_text() {
+        usize::MAX
+    } else {
+        let declared = ((p.end_u.unwrap_or(u_first) - u_first) / u_inc + 0.5).floor() + 1.0;
+        let available = bytes.len() / record_len.max(1);
+        if declared > available as f64 {
+            return Err(err(
+                "data section",
+                format!("holds {available} records of {record_len} bytes, the header declares {declared}"),
+            ));
+        }
+        declared as usize
+    };
+    let estimate = if format.is_text() { bytes.len() / (record_len + 1).max(1) } else { max_records };
+    if estimate.saturating_mul(nv) > MAX_CELLS {
+        return Err(err("data section", format!("{estimate} x {nv} cells exceed the supported size")));
+    }
+    let mut z: Vec<f32> = crate::memory::large_vec(estimate.saturating_mul(nv));
+    let mut b = Builder::new(cols, estimate);
+    // Decoded pages of a mapped file are handed back as decoding advances, so the
+    // file and the grid are never both resident.
+    const RELEASE_STEP: usize = 8 << 20;
+    let mut released = 0;
+    let decoded = records::decode(format, nch, bytes, max_records, |i, rec, end| {
+        z.extend(sections.columns.iter().map(|&c| rec[c] as f32));
+        if end - released >= RELEASE_STEP {
+            data.bytes.release(data.offset + released, data.offset + end);
+            released = end;
+        }
+        b.push(i, rec)
+    })?;
+    let nu = match decoded {
+        Ok(n) => n,
+        Err(Truncated { record, channels_read }) => {
+            return Err(Error::format(
+                path,
+                Location::Record { record, channel: Some(channels_read + 1) },
+                "data section",
+                format!("record ends after {channels_read} of {nch} channels"),
+            ))
+        }
+    };
+    if nu < 2 {
+        return Err(err("data section", format!("{nu} cross section(s) found, at least 2 are needed")));
+    }
+    if let Some(bad) = b.first_nan_heading {
+        return Err(Error::format(
+            path,
+            Location::Record { record: bad + 1, channel: cols.phi.map(|c| c + 1) },
+            "reference line phi",
+            "heading is NaN",
+        ));
+    }
+    Ok((z, b, nu))
+}
+
+/// Warnings about the records that do not stop the load: text data ending before the
+/// declared end, NaN in the slope or banking channel. NaN there loads, as with the
+/// reference (PyOpenCRG writes NaN as the first value, which the integration never
+/// reads); elsewhere it makes the elevations around it NaN.
+fn channel_warnings(
+    header: &Header,
+    path: &Path,
+    cols: &ColumnMap,
+    b: &Builder,
+    nu: usize,
+    u_first: f64,
+    u_inc: f64,
+) -> Vec<String> {
+    let mut warnings = Vec::new();
+    if let (true, Some(end)) = (header.format.is_text(), header.road.end_u) {
+        let declared = ((end - u_first) / u_inc + 0.5).floor() + 1.0;
+        if (nu as f64) < declared {
+            warnings.push(format!(
+                "{}: data section: {nu} records where REFERENCE_LINE_END_U = {end} declares {declared}; \
+                 the road ends at u = {}",
+                path.display(),
+                u_first + (nu - 1) as f64 * u_inc
+            ));
+        }
+    }
+    for (values, col, name) in [(&b.slope, cols.slope, "slope"), (&b.bank, cols.bank, "banking")] {
+        if let Some(i) = values.iter().skip(1).position(|v| v.is_nan()) {
+            warnings.push(format!(
+                "{}: record {}, channel {}: reference line {name} is NaN; elevations there will be NaN",
+                path.display(),
+                i + 2,
+                col.map_or(0, |c| c + 1)
+            ));
+        }
+    }
+    warnings
 }
 
 /// Columns of the reference line channels in a record.
