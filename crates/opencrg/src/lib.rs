@@ -25,6 +25,7 @@ mod base {
     pub(crate) mod compat;
     pub(crate) mod error;
     pub(crate) mod memory;
+    pub(crate) mod setting_values;
     pub mod settings;
 }
 mod model {
@@ -64,6 +65,7 @@ pub use read::reader;
 use read::{records, syntax};
 pub use write::writer;
 
+pub use base::setting_values::{Continuation, CpOption, CurvMode, Modifier};
 pub use compat::{Compat, UnknownCompat};
 pub use contact::ContactPoint;
 pub use error::{Error, Location, Result};

@@ -90,6 +90,12 @@ impl Road {
         self.events.push(event);
     }
 
+    /// Sets a modifier with a typed value (see [`Modifier`](crate::Modifier));
+    /// it acts at the next [`Road::apply_modifiers`].
+    pub fn set_modifier(&mut self, modifier: crate::Modifier) -> crate::Result<()> {
+        self.modifiers.set_modifier(modifier)
+    }
+
     /// Starts loading the grid cells around (u, v) into the caches (see [`PrefetchHint`]).
     #[inline(always)]
     pub(crate) fn prefetch_cells(&self, u: f64, v: f64) {

@@ -97,6 +97,21 @@ impl ContactPoint {
         Ok(self.edit_options(|o| o.set_double(id, value))?)
     }
 
+    /// Sets an option with a typed value (see [`CpOption`](crate::CpOption)),
+    /// with the effects of [`ContactPoint::set_option_int`] and
+    /// [`ContactPoint::set_option_double`]; a check switched off is removed.
+    pub fn set_option(&mut self, option: crate::CpOption) -> Result<()> {
+        use crate::settings::Value;
+        match option.entry() {
+            (id, Some(Value::Int(i))) => self.set_option_int(id, i),
+            (id, Some(Value::Double(d))) => self.set_option_double(id, d),
+            (id, None) => {
+                self.remove_option(id);
+                Ok(())
+            }
+        }
+    }
+
     /// Removes one option (the evaluation then behaves as with the option absent).
     pub fn remove_option(&mut self, id: u32) -> bool {
         self.edit_options(|o| o.remove(id))
@@ -148,9 +163,11 @@ impl ContactPoint {
         elevation(eval::uv_to_z(&self.road, &self.eval, u, v))
     }
 
-    /// Elevation at (u, v) for the common case only (inside an evenly spaced grid, no
-    /// smoothing zone); `None` for every other case, where [`ContactPoint::uv_to_z`]
-    /// answers. Never panics.
+    /// The C library's call-free path of `crgEvaluv2z`: the elevation for the common case
+    /// only (inside an evenly spaced grid, no smoothing zone), `None` for every other case,
+    /// where [`ContactPoint::uv_to_z`] answers. Never panics and calls nothing, so the C
+    /// entry point needs no stack frame; not part of the supported Rust API.
+    #[doc(hidden)]
     #[inline(always)]
     pub fn uv_to_z_plain(&self, u: f64, v: f64) -> Option<f64> {
         self.road.prefetch_cells(u, v);
