@@ -134,7 +134,7 @@ impl Grid {
 
     /// Folds the mean offset into the stored values (as the reference does when it
     /// prepares the data again).
-    pub fn fold_mean(&mut self) {
+    pub(crate) fn fold_mean(&mut self) {
         if self.mean != 0.0 {
             let add = self.mean as f32;
             for z in self.z.iter_mut().filter(|z| !z.is_nan()) {
@@ -145,7 +145,7 @@ impl Grid {
     }
 
     /// Multiplies every value (and the mean offset) by `factor`.
-    pub fn scale(&mut self, factor: f64) {
+    pub(crate) fn scale(&mut self, factor: f64) {
         let f = factor as f32;
         for z in self.z.iter_mut() {
             *z *= f;
@@ -158,7 +158,7 @@ impl Grid {
     /// Scanning from the right border leftwards, a NaN takes its right neighbour's
     /// value (or `offset` for [`NanMode::SetZero`]); the first value copied in a
     /// pass gets `offset` added. Then the same from the left border rightwards.
-    pub fn fill_nans(&mut self, mode: NanMode, offset: f64) -> usize {
+    pub(crate) fn fill_nans(&mut self, mode: NanMode, offset: f64) -> usize {
         let nv = self.nv;
         let off = offset as f32;
         let mut total = 0;

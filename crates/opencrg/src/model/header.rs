@@ -222,7 +222,7 @@ impl DataFormat {
     }
 
     /// Width of one value: characters for text, bytes for binary.
-    pub fn field_width(self) -> usize {
+    pub(crate) fn field_width(self) -> usize {
         match self {
             DataFormat::Lrfi => 10,
             DataFormat::Ldfi => 20,

@@ -42,7 +42,7 @@ fn gap(p: f64, lo: f64, hi: f64) -> f64 {
 
 /// Nearest-sample index over every tenth reference line point (and the last one).
 #[derive(Debug, Clone, Default)]
-pub struct SampleIndex {
+pub(crate) struct SampleIndex {
     /// Points in k-d tree order: the median of each range splits it, along the
     /// range's longer side (reference lines are long and thin, so alternating
     /// axes would prune badly).
@@ -51,7 +51,7 @@ pub struct SampleIndex {
 
 impl SampleIndex {
     /// Builds the index for a reference line.
-    pub fn build(line: &RefLine) -> Self {
+    pub(crate) fn build(line: &RefLine) -> Self {
         let mut nodes: Vec<Node> = sample_indices(line.n)
             .map(|i| Node { x: line.x[i], y: line.y[i], index: i, y_split: false, bbox: [0.0; 4] })
             .collect();

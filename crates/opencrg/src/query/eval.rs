@@ -23,7 +23,7 @@ pub(crate) const V_BORDER_SNAP: f64 = 1e-8;
 /// The options evaluation reads, taken out of a settings table once so that the
 /// hot path reads plain fields.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct EvalOptions {
+pub(crate) struct EvalOptions {
     border_u: i32,
     border_v: i32,
     offset_u: f64,
@@ -69,7 +69,7 @@ pub(crate) fn wrap_closed_u(line: &RefLine, options: &EvalOptions, u: f64) -> f6
 /// x/y of the point at (u, v). Beyond the ends the line continues straight along
 /// the end headings; inside, v is measured along normals blended between the
 /// neighbouring segments.
-pub fn uv_to_xy(road: &Road, options: &EvalOptions, u: f64, v: f64) -> (f64, f64) {
+pub(crate) fn uv_to_xy(road: &Road, options: &EvalOptions, u: f64, v: f64) -> (f64, f64) {
     let l = &road.line;
     let u = wrap_closed_u(l, options, u);
     let (i, frac) = l.interval(u);
@@ -340,7 +340,7 @@ fn v_cell(g: &crate::grid::Grid, v: f64) -> (usize, f64) {
 /// smoothing zone; `None` for every other case. Same answers as [`uv_to_z`], and it
 /// never panics, so a C entry point may call it before setting up its panic guard.
 #[inline(always)]
-pub fn uv_to_z_plain(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<f64> {
+pub(crate) fn uv_to_z_plain(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<f64> {
     let g = &road.grid;
     if !(plain_inside(road, options, u, v) && g.layout == VLayout::Indexed) {
         return None;
@@ -352,7 +352,7 @@ pub fn uv_to_z_plain(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Opti
 
 /// Elevation at (u, v) with the given options; `None` when a border mode refuses.
 #[inline(always)]
-pub fn uv_to_z(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<f64> {
+pub(crate) fn uv_to_z(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<f64> {
     let g = &road.grid;
     if plain_inside(road, options, u, v) {
         let (iu, fu) = u_cell(&road.line, u);
@@ -587,7 +587,7 @@ pub(crate) fn place(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Optio
 /// segment holding u (the releases' profile: the segment before it); the curvature comes from points 0.5 m apart (at least one
 /// increment) and, in lateral curvature mode, is that of the parallel at v.
 #[inline]
-pub fn uv_to_pk(road: &Road, options: &EvalOptions, u: f64, v: f64) -> (f64, f64) {
+pub(crate) fn uv_to_pk(road: &Road, options: &EvalOptions, u: f64, v: f64) -> (f64, f64) {
     let l = &road.line;
     if l.phi.is_none() && l.phi_first.to_bits() == l.phi_last.to_bits() {
         // A straight line (no heading channel) with one heading: the answer below

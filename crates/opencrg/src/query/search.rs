@@ -11,7 +11,7 @@ use crate::refline::RefLine;
 use crate::sample_index::SampleIndex;
 
 /// Default number of history entries of a contact point.
-pub const DEFAULT_HISTORY: usize = 50;
+pub(crate) const DEFAULT_HISTORY: usize = 50;
 
 #[derive(Debug, Clone, Copy, Default)]
 struct Entry {
@@ -22,7 +22,7 @@ struct Entry {
 
 /// The recent results of a contact point, newest first, used to start the search.
 #[derive(Debug, Clone)]
-pub struct History {
+pub(crate) struct History {
     ring: Vec<Entry>,
     head: usize,
     used: usize,
@@ -32,24 +32,24 @@ pub struct History {
 
 impl History {
     /// A history of `size` entries with squared close and far distances.
-    pub fn new(size: usize, close2: f64, far2: f64) -> Self {
+    pub(crate) fn new(size: usize, close2: f64, far2: f64) -> Self {
         History { ring: vec![Entry::default(); size], head: 0, used: 0, close2, far2 }
     }
 
     /// Empties the history and gives it `size` entries.
-    pub fn resize(&mut self, size: usize) {
+    pub(crate) fn resize(&mut self, size: usize) {
         self.ring = vec![Entry::default(); size];
         self.head = 0;
         self.used = 0;
     }
 
     /// Sets the distance under which an entry is a close hit.
-    pub fn set_close(&mut self, distance: f64) {
+    pub(crate) fn set_close(&mut self, distance: f64) {
         self.close2 = distance * distance;
     }
 
     /// Sets the distance under which an entry is a far hit.
-    pub fn set_far(&mut self, distance: f64) {
+    pub(crate) fn set_far(&mut self, distance: f64) {
         self.far2 = distance * distance;
     }
 
@@ -71,7 +71,7 @@ impl History {
     }
 
     /// Starts the history afresh with the reference line point at `u`.
-    pub fn preload(&mut self, line: &RefLine, u: f64) {
+    pub(crate) fn preload(&mut self, line: &RefLine, u: f64) {
         if self.ring.is_empty() {
             return;
         }

@@ -12,7 +12,7 @@ use byteorder::{BigEndian, ByteOrder};
 
 /// Why decoding stopped early.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Truncated {
+pub(crate) struct Truncated {
     /// 1-based number of the incomplete record.
     pub record: usize,
     /// How many of its channels were complete.
@@ -25,7 +25,7 @@ pub struct Truncated {
 /// Binary data stops after `max_records` (the count the header declares); text data
 /// runs to the end of the buffer. An incomplete record that is not just trailing
 /// blank space is reported as [`Truncated`].
-pub fn decode<E>(
+pub(crate) fn decode<E>(
     format: DataFormat,
     channels: usize,
     data: &[u8],
@@ -114,7 +114,7 @@ fn decode_text<E>(
 
 /// Reads one fixed-width text field the way the reference does.
 #[inline]
-pub fn text_field(field: &[u8]) -> f64 {
+pub(crate) fn text_field(field: &[u8]) -> f64 {
     if let Some(v) = plain_decimal(field) {
         return v;
     }

@@ -9,7 +9,7 @@ use crate::header::Channel;
 
 /// The sections of a CRG header.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Section {
+pub(crate) enum Section {
     /// Outside any section.
     None,
     /// `$CT`: free comment text.
@@ -30,7 +30,7 @@ pub enum Section {
 
 /// What a line starting with `$` means.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Tag {
+pub(crate) enum Tag {
     /// The start of a section (ending the previous one).
     Start(Section),
     /// `$$$$...`: the data section starts after this line.
@@ -40,7 +40,7 @@ pub enum Tag {
 }
 
 /// Classifies a header line; `None` when it does not start with `$`.
-pub fn tag(line: &str) -> Option<Tag> {
+pub(crate) fn tag(line: &str) -> Option<Tag> {
     let t = line.trim_start_matches(' ');
     if !t.starts_with('$') {
         return None;
@@ -64,17 +64,17 @@ pub fn tag(line: &str) -> Option<Tag> {
 }
 
 /// Case-insensitive ASCII prefix test.
-pub fn starts_with_ignore_case(s: &str, prefix: &str) -> bool {
+pub(crate) fn starts_with_ignore_case(s: &str, prefix: &str) -> bool {
     s.len() >= prefix.len() && s.as_bytes()[..prefix.len()].eq_ignore_ascii_case(prefix.as_bytes())
 }
 
 /// Decodes ISO-8859-1 bytes (every byte is one character).
-pub fn latin1(bytes: &[u8]) -> String {
+pub(crate) fn latin1(bytes: &[u8]) -> String {
     bytes.iter().map(|&b| b as char).collect()
 }
 
 /// One header line: its 1-based number, its text without the terminator, and the offset after it.
-pub struct Line<'a> {
+pub(crate) struct Line<'a> {
     /// 1-based line number.
     pub number: usize,
     /// The bytes of the line, without `\r`/`\n`.
@@ -84,7 +84,7 @@ pub struct Line<'a> {
 }
 
 /// Iterates over the lines of a buffer, starting at an offset.
-pub struct Lines<'a> {
+pub(crate) struct Lines<'a> {
     buf: &'a [u8],
     pos: usize,
     number: usize,
@@ -92,7 +92,7 @@ pub struct Lines<'a> {
 
 impl<'a> Lines<'a> {
     /// Lines of `buf` from its start.
-    pub fn new(buf: &'a [u8]) -> Self {
+    pub(crate) fn new(buf: &'a [u8]) -> Self {
         Lines { buf, pos: 0, number: 0 }
     }
 }
@@ -122,13 +122,13 @@ impl<'a> Iterator for Lines<'a> {
 }
 
 /// A comment line: empty, blank, or starting with `*` after blanks.
-pub fn is_comment(line: &str) -> bool {
+pub(crate) fn is_comment(line: &str) -> bool {
     let t = line.trim_start_matches([' ', '\t']);
     t.is_empty() || t.starts_with('*')
 }
 
 /// Removes an inline `!` comment.
-pub fn strip_inline_comment(line: &str) -> &str {
+pub(crate) fn strip_inline_comment(line: &str) -> &str {
     match line.find('!') {
         Some(i) => &line[..i],
         None => line,
@@ -137,7 +137,7 @@ pub fn strip_inline_comment(line: &str) -> &str {
 
 /// Reads a number like C's `atof`: blanks, then the longest prefix that is a decimal
 /// number (`inf`, `infinity` and `nan` included). `None` when there is no such prefix.
-pub fn parse_f64_prefix(s: &str) -> Option<f64> {
+pub(crate) fn parse_f64_prefix(s: &str) -> Option<f64> {
     let t = s.trim_start_matches([' ', '\t']);
     let b = t.as_bytes();
     let mut i = 0;
@@ -185,7 +185,7 @@ pub fn parse_f64_prefix(s: &str) -> Option<f64> {
 }
 
 /// Reads an integer like C's `atoi`: blanks, sign, digits; `None` when there are no digits.
-pub fn parse_i32_prefix(s: &str) -> Option<i32> {
+pub(crate) fn parse_i32_prefix(s: &str) -> Option<i32> {
     let t = s.trim_start_matches([' ', '\t']);
     let b = t.as_bytes();
     let mut i = 0;
@@ -214,14 +214,14 @@ pub fn parse_i32_prefix(s: &str) -> Option<i32> {
 }
 
 /// Splits `KEY = value ! comment` into a lower-case key and the value text.
-pub fn key_value(line: &str) -> Option<(String, &str)> {
+pub(crate) fn key_value(line: &str) -> Option<(String, &str)> {
     let eq = line.find('=')?;
     let key = line[..eq].trim().to_ascii_lowercase();
     Some((key, &line[eq + 1..]))
 }
 
 /// Finds the table entry whose name is the longest prefix of `key`.
-pub fn lookup<T: Copy>(table: &[(&'static str, T)], key: &str) -> Option<(&'static str, T)> {
+pub(crate) fn lookup<T: Copy>(table: &[(&'static str, T)], key: &str) -> Option<(&'static str, T)> {
     table.iter().filter(|(name, _)| key.starts_with(name)).max_by_key(|(name, _)| name.len()).copied()
 }
 
@@ -238,7 +238,7 @@ fn find_token<'a>(s: &'a str, token: &str) -> Option<&'a str> {
 }
 
 /// Parses a `D:` line into a channel; the error says what is wrong.
-pub fn parse_channel(line: &str) -> Result<Channel, String> {
+pub(crate) fn parse_channel(line: &str) -> Result<Channel, String> {
     let body = find_token(line, "D:").ok_or("not a channel definition")?;
     if let Some(rest) = find_token(body, "long section") {
         let (at, value_text) = match find_token(rest, "at v ") {
