@@ -275,3 +275,14 @@ def test_threads_share_a_road(road_file):
     for t in threads:
         t.join()
     assert all(same_bits(r, expected) for r in results)
+
+
+def test_the_readme_example_runs(tmp_path, monkeypatch):
+    from conftest import REPO
+
+    text = (REPO / "README.md").read_text()
+    code = text.split("```python\n", 1)[1].split("```", 1)[0]
+    code = code.replace("examples/data/demo_road.crg", str(REPO / "examples/data/demo_road.crg"))
+    monkeypatch.chdir(tmp_path)
+    exec(compile(code, "README.md", "exec"), {})
+    assert opencrg.Road(tmp_path / "copy.crg").format == "KDBI"
