@@ -156,7 +156,13 @@ fn search(nodes: &[Node], x: f64, y: f64, best: &mut (f64, usize)) {
     let diff = if node.y_split { dy } else { dx };
     let (near, far) = if diff < 0.0 { (&nodes[..mid], &nodes[mid + 1..]) } else { (&nodes[mid + 1..], &nodes[..mid]) };
     search(near, x, y, best);
-    search(far, x, y, best);
+    // Every point beyond the splitting line differs from (x, y) by at least `diff` along
+    // the split axis (in computed values too: rounding is monotonic), so its computed
+    // squared distance is at least diff²: when that exceeds the best, nothing there can
+    // win or tie, and the far side is not even touched.
+    if diff * diff <= best.0 {
+        search(far, x, y, best);
+    }
 }
 
 #[cfg(test)]
@@ -169,5 +175,42 @@ mod tests {
         assert_eq!(sample_indices(10).collect::<Vec<_>>(), vec![0, 9]);
         assert_eq!(sample_indices(25).collect::<Vec<_>>(), vec![0, 10, 20, 24]);
         assert_eq!(sample_indices(21).collect::<Vec<_>>(), vec![0, 10, 20]);
+    }
+
+    /// The tree answers exactly as the linear scan, ties (to the lowest index) included,
+    /// on a straight line, a spiral that passes near itself, and a line that turns back.
+    #[test]
+    fn the_tree_finds_the_sample_a_linear_scan_finds() {
+        use crate::synth::RoadSpec;
+        let roads = [
+            RoadSpec::straight(100.0, 2.0, 0.1, 0.5),
+            RoadSpec::straight(300.0, 2.0, 0.1, 0.5).with_heading(|u| 0.002 * u * u / 10.0),
+            RoadSpec::straight(120.0, 2.0, 0.1, 0.5).with_heading(|u| if u < 60.0 { 0.0 } else { 3.1 }),
+        ];
+        let mut seed = 7u64;
+        let mut random = move || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for spec in roads {
+            let road = spec.build().expect("a valid road");
+            let line = road.reference_line();
+            let index = SampleIndex::build(line);
+            let (x0, x1) = line.x.iter().fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
+            let (y0, y1) = line.y.iter().fold((f64::MAX, f64::MIN), |(a, b), &y| (a.min(y), b.max(y)));
+            let mut points: Vec<(f64, f64)> = (0..3000)
+                .map(|_| (x0 - 20.0 + (x1 - x0 + 40.0) * random(), y0 - 20.0 + (y1 - y0 + 40.0) * random()))
+                .collect();
+            // On samples, and halfway between two samples (a tie on the straight line).
+            points.extend((0..line.n).step_by(37).map(|i| (line.x[i], line.y[i])));
+            points.extend(
+                (0..line.n.saturating_sub(10))
+                    .step_by(90)
+                    .map(|i| ((line.x[i] + line.x[i + 10]) / 2.0, (line.y[i] + line.y[i + 10]) / 2.0 + 0.75)),
+            );
+            for (x, y) in points {
+                assert_eq!(index.nearest(line, x, y), scan_nearest(line, x, y), "at ({x}, {y})");
+            }
+        }
     }
 }
