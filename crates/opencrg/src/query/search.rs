@@ -30,6 +30,24 @@ pub(crate) struct History {
     far2: f64,
 }
 
+/// The index of the first entry closer than `limit` (squared) to (x, y). Entries are
+/// tested four at a time, so that their distances are computed side by side.
+#[inline]
+fn first_within(entries: &[Entry], x: f64, y: f64, limit: f64) -> Option<usize> {
+    let d2 = |e: &Entry| {
+        let (dx, dy) = (x - e.x, y - e.y);
+        dx * dx + dy * dy
+    };
+    let mut chunks = entries.chunks_exact(4);
+    for chunk in chunks.by_ref() {
+        let near = [d2(&chunk[0]) < limit, d2(&chunk[1]) < limit, d2(&chunk[2]) < limit, d2(&chunk[3]) < limit];
+        if near.iter().any(|&n| n) {
+            return near.iter().position(|&n| n).map(|k| chunk[k].index);
+        }
+    }
+    chunks.remainder().iter().find(|e| d2(e) < limit).map(|e| e.index)
+}
+
 impl History {
     /// A history of `size` entries with squared close and far distances.
     pub(crate) fn new(size: usize, close2: f64, far2: f64) -> Self {
@@ -82,17 +100,15 @@ impl History {
         self.used = 1;
     }
 
-    /// The index to start from: the first close entry, else the first far one.
+    /// The index to start from: the newest entry within the close or the far distance.
     fn lookup(&self, x: f64, y: f64) -> Option<usize> {
-        for j in 0..self.used {
-            let e = self.get(j);
-            let (dx, dy) = (x - e.x, y - e.y);
-            let d2 = dx * dx + dy * dy;
-            if d2 < self.close2 || d2 < self.far2 {
-                return Some(e.index);
-            }
-        }
-        None
+        // `d2 < close2 || d2 < far2` is `d2 < max(close2, far2)`, NaN included (a NaN
+        // bound never holds, and `max` ignores a NaN).
+        let limit = self.close2.max(self.far2);
+        // Newest first: from the head to the end of the ring, then from its start.
+        let first = self.ring.len().min(self.head + self.used);
+        let (newer, older) = (&self.ring[self.head..first], &self.ring[..self.used - (first - self.head)]);
+        first_within(newer, x, y, limit).or_else(|| first_within(older, x, y, limit))
     }
 
     fn record(&mut self, x: f64, y: f64, index: usize) {
@@ -232,6 +248,28 @@ pub(crate) fn xy_to_uv(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The chunked lookup answers as the plain newest-first loop, across the ring's wrap.
+    #[test]
+    fn lookup_finds_the_newest_entry_within_reach() {
+        let mut seed = 3u64;
+        let mut random = move || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for size in [2, 3, 5, 8, 13, 50] {
+            let mut h = History::new(size, 0.5, 2.0);
+            for step in 0..200 {
+                let (x, y) = (10.0 * random(), 10.0 * random());
+                let plain = (0..h.used).map(|j| h.get(j)).find(|e| {
+                    let d2 = (x - e.x) * (x - e.x) + (y - e.y) * (y - e.y);
+                    d2 < h.close2 || d2 < h.far2
+                });
+                assert_eq!(h.lookup(x, y), plain.map(|e| e.index), "size {size}, step {step}");
+                h.record(x, y, step);
+            }
+        }
+    }
 
     #[test]
     fn history_ring_keeps_newest_first() {
