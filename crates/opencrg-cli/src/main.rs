@@ -16,8 +16,9 @@ mod info;
 mod render;
 
 use clap::{Parser, Subcommand, ValueEnum};
-use opencrg::settings::opt;
-use opencrg::{ContactPoint, DataFormat, Road};
+use opencrg::settings;
+
+use opencrg::{ContactPoint, Continuation, CpOption, DataFormat, Road};
 use std::io::{BufRead, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -160,34 +161,29 @@ fn contact_point(path: &Path, o: &EvalOptions) -> Result<ContactPoint, Failure> 
     }
     let mut cp = ContactPoint::new(Arc::new(road));
     let mode = |m: BorderMode| match m {
-        BorderMode::None => 0,
-        BorderMode::Zero => 1,
-        BorderMode::Keep => 2,
-        BorderMode::Repeat => 3,
-        BorderMode::Reflect => 4,
+        BorderMode::None => settings::BorderMode::None,
+        BorderMode::Zero => settings::BorderMode::ExZero,
+        BorderMode::Keep => settings::BorderMode::ExKeep,
+        BorderMode::Repeat => settings::BorderMode::Repeat,
+        BorderMode::Reflect => settings::BorderMode::Reflect,
     };
-    let e = |r: opencrg::Result<()>| r.map_err(|e| e.to_string());
-    if let Some(m) = o.border_mode_u {
-        e(cp.set_option_int(opt::BORDER_MODE_U, mode(m)))?;
-    }
-    if let Some(m) = o.border_mode_v {
-        e(cp.set_option_int(opt::BORDER_MODE_V, mode(m)))?;
-    }
-    for (id, value) in [
-        (opt::BORDER_OFFSET_U, o.border_offset_u),
-        (opt::BORDER_OFFSET_V, o.border_offset_v),
-        (opt::SMOOTH_U_BEGIN, o.smooth_begin),
-        (opt::SMOOTH_U_END, o.smooth_end),
-    ] {
-        if let Some(v) = value {
-            e(cp.set_option_double(id, v))?;
-        }
-    }
-    if let Some(c) = o.curv_mode {
-        e(cp.set_option_int(opt::CURV_MODE, matches!(c, CurvMode::Refline) as i32))?;
-    }
-    if o.close_track {
-        e(cp.set_option_int(opt::REFLINE_CONTINUE, 1))?;
+    let options = [
+        o.border_mode_u.map(|m| CpOption::BorderModeU(mode(m))),
+        o.border_mode_v.map(|m| CpOption::BorderModeV(mode(m))),
+        o.border_offset_u.map(CpOption::BorderOffsetU),
+        o.border_offset_v.map(CpOption::BorderOffsetV),
+        o.smooth_begin.map(CpOption::SmoothUBegin),
+        o.smooth_end.map(CpOption::SmoothUEnd),
+        o.curv_mode.map(|c| {
+            CpOption::CurvMode(match c {
+                CurvMode::Lateral => opencrg::CurvMode::Lateral,
+                CurvMode::Refline => opencrg::CurvMode::RefLine,
+            })
+        }),
+        o.close_track.then_some(CpOption::RefLineContinue(Continuation::CloseTrack)),
+    ];
+    for option in options.into_iter().flatten() {
+        cp.set_option(option).map_err(|e| e.to_string())?;
     }
     Ok(cp)
 }

@@ -38,11 +38,6 @@ impl<'py> Pair<'py> {
         Ok((self.a.as_slice()?, self.b.as_slice()?))
     }
 
-    /// How many points.
-    pub(crate) fn len(&self) -> usize {
-        self.shape.iter().product()
-    }
-
     /// The results: floats for scalar inputs, else arrays of the inputs' shape; one
     /// value or array alone, several as a tuple.
     pub(crate) fn results(&self, py: Python<'py>, outputs: Vec<Vec<f64>>) -> PyResult<Bound<'py, PyAny>> {

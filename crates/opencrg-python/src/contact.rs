@@ -1,6 +1,6 @@
 //! `opencrg.ContactPoint`: a road with its own options and x/y search history.
 
-use crate::evaluation::{evaluate, set_option, set_options, Call};
+use crate::evaluation::{evaluate, for_each_evaluation, set_option, set_options, Call};
 use crate::names;
 use crate::road::Road;
 use ::opencrg as crg;
@@ -101,87 +101,28 @@ impl ContactPoint {
         self.inner.set_history(size);
     }
 
-    /// Elevation z at (u, v).
-    fn uv_to_z<'py>(
-        &mut self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        self.eval(py, Call::UvToZ, u, v)
-    }
-
-    /// Elevation z at (x, y).
-    fn xy_to_z<'py>(
-        &mut self,
-        py: Python<'py>,
-        x: &Bound<'py, PyAny>,
-        y: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        self.eval(py, Call::XyToZ, x, y)
-    }
-
-    /// (x, y) of (u, v).
-    fn uv_to_xy<'py>(
-        &mut self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        self.eval(py, Call::UvToXy, u, v)
-    }
-
-    /// (u, v) of (x, y).
-    fn xy_to_uv<'py>(
-        &mut self,
-        py: Python<'py>,
-        x: &Bound<'py, PyAny>,
-        y: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        self.eval(py, Call::XyToUv, x, y)
-    }
-
-    /// (heading, curvature) at (u, v).
-    fn uv_to_pk<'py>(
-        &mut self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        self.eval(py, Call::UvToPk, u, v)
-    }
-
-    /// (heading, curvature) at (x, y).
-    fn xy_to_pk<'py>(
-        &mut self,
-        py: Python<'py>,
-        x: &Bound<'py, PyAny>,
-        y: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        self.eval(py, Call::XyToPk, x, y)
-    }
-
-    /// (z, nx, ny, nz) at (u, v): elevation and the surface's upward unit normal in x/y/z.
-    fn uv_to_normal<'py>(
-        &mut self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        self.eval(py, Call::UvToNormal, u, v)
-    }
-
-    /// (z, nx, ny, nz) at (x, y): elevation and the surface's upward unit normal in x/y/z.
-    fn xy_to_normal<'py>(
-        &mut self,
-        py: Python<'py>,
-        x: &Bound<'py, PyAny>,
-        y: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        self.eval(py, Call::XyToNormal, x, y)
-    }
-
     fn __repr__(&self) -> String {
         format!("<opencrg.ContactPoint on {}>", self.inner.road().header().path.display())
     }
 }
+
+/// The evaluations as methods of `ContactPoint`: `cp.uv_to_z(u, v)`, ...
+macro_rules! contact_point_evaluations {
+    ($($doc:literal $name:ident($a:ident, $b:ident) $call:ident,)*) => {
+        #[pymethods]
+        impl ContactPoint {
+            $(
+                #[doc = $doc]
+                fn $name<'py>(
+                    &mut self,
+                    py: Python<'py>,
+                    $a: &Bound<'py, PyAny>,
+                    $b: &Bound<'py, PyAny>,
+                ) -> PyResult<Bound<'py, PyAny>> {
+                    self.eval(py, Call::$call, $a, $b)
+                }
+            )*
+        }
+    };
+}
+for_each_evaluation!(contact_point_evaluations);

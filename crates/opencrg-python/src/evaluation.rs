@@ -5,9 +5,27 @@ use crate::arrays::Pair;
 use crate::errors;
 use crate::names;
 use ::opencrg as crg;
-use ::opencrg::settings::{Family, Value};
+use ::opencrg::settings::Family;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+
+/// Calls `$emit!` with every evaluation as `"doc" name(first, second) Call,`: the one
+/// list from which `Road` and `ContactPoint` get their evaluation methods.
+macro_rules! for_each_evaluation {
+    ($emit:ident) => {
+        $emit! {
+            "Elevation z at (u, v)." uv_to_z(u, v) UvToZ,
+            "Elevation z at (x, y)." xy_to_z(x, y) XyToZ,
+            "(x, y) of (u, v)." uv_to_xy(u, v) UvToXy,
+            "(u, v) of (x, y)." xy_to_uv(x, y) XyToUv,
+            "(heading, curvature) at (u, v)." uv_to_pk(u, v) UvToPk,
+            "(heading, curvature) at (x, y)." xy_to_pk(x, y) XyToPk,
+            "(z, nx, ny, nz) at (u, v): elevation and the surface's upward unit normal in x/y/z." uv_to_normal(u, v) UvToNormal,
+            "(z, nx, ny, nz) at (x, y): elevation and the surface's upward unit normal in x/y/z." xy_to_normal(x, y) XyToNormal,
+        }
+    };
+}
+pub(crate) use for_each_evaluation;
 
 /// The evaluations, each with the number of values it gives per point.
 #[derive(Clone, Copy)]
@@ -82,7 +100,6 @@ pub(crate) fn evaluate<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let points = Pair::new(a, b)?;
     let (sa, sb) = points.slices()?;
-    debug_assert_eq!(sa.len(), points.len());
     let outputs = py.detach(|| run(cp, call, sa, sb));
     points.results(py, outputs)
 }
@@ -90,15 +107,13 @@ pub(crate) fn evaluate<'py>(
 /// Sets an option by its Python name on a core contact point.
 pub(crate) fn set_option(cp: &mut crg::ContactPoint, name: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
     let s = names::lookup(Family::Option, name)?;
-    let result = match names::value_for(s, value)? {
-        Some(Value::Int(i)) => cp.set_option_int(s.id, i),
-        Some(Value::Double(d)) => cp.set_option_double(s.id, d),
+    match names::value_for(s, value)? {
+        Some(v) => cp.set_option_value(s.id, v).map_err(errors::to_py),
         None => {
             cp.remove_option(s.id);
             Ok(())
         }
-    };
-    result.map_err(errors::to_py)
+    }
 }
 
 /// Sets every keyword argument as an option.

@@ -4,6 +4,7 @@
 
 use ::opencrg::settings::{self, Accepts, Family, Kind, SettingInfo, Settings, Value, SETTINGS};
 use ::opencrg::settings::{BorderMode, NanMode};
+use ::opencrg::{Continuation, CurvMode};
 use pyo3::exceptions::{PyKeyError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -68,15 +69,12 @@ pub(crate) fn value_for(s: &SettingInfo, value: &Bound<'_, PyAny>) -> PyResult<O
 /// Sets `name = value` in a table of `family`.
 pub(crate) fn set(table: &mut Settings, family: Family, name: &str, value: &Bound<'_, PyAny>) -> PyResult<u32> {
     let s = lookup(family, name)?;
-    let result = match value_for(s, value)? {
-        Some(Value::Int(i)) => table.set_int(s.id, i),
-        Some(Value::Double(d)) => table.set_double(s.id, d),
+    match value_for(s, value)? {
+        Some(v) => table.set_value(s.id, v).map_err(|e| PyValueError::new_err(e.to_string()))?,
         None => {
             table.remove(s.id);
-            Ok(())
         }
-    };
-    result.map_err(|e| PyValueError::new_err(e.to_string()))?;
+    }
     Ok(s.id)
 }
 
@@ -101,10 +99,10 @@ const CONSTANTS: [(&str, i32); 12] = [
     ("BORDER_EX_KEEP", BorderMode::ExKeep as i32),
     ("BORDER_REPEAT", BorderMode::Repeat as i32),
     ("BORDER_REFLECT", BorderMode::Reflect as i32),
-    ("REFLINE_EXTRAPOLATE", 0),
-    ("REFLINE_CLOSE_TRACK", 1),
-    ("CURV_LATERAL", 0),
-    ("CURV_REFLINE", 1),
+    ("REFLINE_EXTRAPOLATE", Continuation::Extrapolate as i32),
+    ("REFLINE_CLOSE_TRACK", Continuation::CloseTrack as i32),
+    ("CURV_LATERAL", CurvMode::Lateral as i32),
+    ("CURV_REFLINE", CurvMode::RefLine as i32),
     ("GRID_NAN_KEEP", NanMode::Keep as i32),
     ("GRID_NAN_SET_ZERO", NanMode::SetZero as i32),
     ("GRID_NAN_KEEP_LAST", NanMode::KeepLast as i32),

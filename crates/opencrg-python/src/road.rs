@@ -2,7 +2,7 @@
 //! sections as dicts, modifiers, checks, writing, and evaluation with keyword options.
 
 use crate::errors;
-use crate::evaluation::{evaluate, set_options, Call};
+use crate::evaluation::{evaluate, for_each_evaluation, set_options, Call};
 use crate::names;
 use ::opencrg as crg;
 use ::opencrg::settings::Family;
@@ -271,102 +271,6 @@ impl Road {
         Ok(dict)
     }
 
-    /// Elevation z at (u, v), with keyword options.
-    #[pyo3(signature = (u, v, **options))]
-    fn uv_to_z<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-        options: Option<&Bound<'py, PyDict>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        self.eval_with(py, Call::UvToZ, u, v, options)
-    }
-
-    /// Elevation z at (x, y), with keyword options.
-    #[pyo3(signature = (x, y, **options))]
-    fn xy_to_z<'py>(
-        &self,
-        py: Python<'py>,
-        x: &Bound<'py, PyAny>,
-        y: &Bound<'py, PyAny>,
-        options: Option<&Bound<'py, PyDict>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        self.eval_with(py, Call::XyToZ, x, y, options)
-    }
-
-    /// (x, y) of (u, v), with keyword options.
-    #[pyo3(signature = (u, v, **options))]
-    fn uv_to_xy<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-        options: Option<&Bound<'py, PyDict>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        self.eval_with(py, Call::UvToXy, u, v, options)
-    }
-
-    /// (u, v) of (x, y), with keyword options.
-    #[pyo3(signature = (x, y, **options))]
-    fn xy_to_uv<'py>(
-        &self,
-        py: Python<'py>,
-        x: &Bound<'py, PyAny>,
-        y: &Bound<'py, PyAny>,
-        options: Option<&Bound<'py, PyDict>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        self.eval_with(py, Call::XyToUv, x, y, options)
-    }
-
-    /// (heading, curvature) at (u, v), with keyword options.
-    #[pyo3(signature = (u, v, **options))]
-    fn uv_to_pk<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-        options: Option<&Bound<'py, PyDict>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        self.eval_with(py, Call::UvToPk, u, v, options)
-    }
-
-    /// (heading, curvature) at (x, y), with keyword options.
-    #[pyo3(signature = (x, y, **options))]
-    fn xy_to_pk<'py>(
-        &self,
-        py: Python<'py>,
-        x: &Bound<'py, PyAny>,
-        y: &Bound<'py, PyAny>,
-        options: Option<&Bound<'py, PyDict>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        self.eval_with(py, Call::XyToPk, x, y, options)
-    }
-
-    /// (z, nx, ny, nz) at (u, v), with keyword options.
-    #[pyo3(signature = (u, v, **options))]
-    fn uv_to_normal<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-        options: Option<&Bound<'py, PyDict>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        self.eval_with(py, Call::UvToNormal, u, v, options)
-    }
-
-    /// (z, nx, ny, nz) at (x, y), with keyword options.
-    #[pyo3(signature = (x, y, **options))]
-    fn xy_to_normal<'py>(
-        &self,
-        py: Python<'py>,
-        x: &Bound<'py, PyAny>,
-        y: &Bound<'py, PyAny>,
-        options: Option<&Bound<'py, PyDict>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        self.eval_with(py, Call::XyToNormal, x, y, options)
-    }
-
     fn __repr__(&self) -> String {
         let (u0, u1) = self.inner.u_range();
         let (v0, v1) = self.inner.v_range();
@@ -377,3 +281,29 @@ impl Road {
         )
     }
 }
+
+/// The evaluations as methods of `Road`: `road.uv_to_z(u, v, **options)`, ... on a new
+/// contact point with the road's options and the keyword options.
+macro_rules! road_evaluations {
+    ($($doc:literal $name:ident($a:ident, $b:ident) $call:ident,)*) => {
+        #[pymethods]
+        impl Road {
+            $(
+                #[doc = $doc]
+                #[doc = ""]
+                #[doc = "Options as keyword arguments (see `opencrg.OPTIONS`)."]
+                #[pyo3(signature = ($a, $b, **options))]
+                fn $name<'py>(
+                    &self,
+                    py: Python<'py>,
+                    $a: &Bound<'py, PyAny>,
+                    $b: &Bound<'py, PyAny>,
+                    options: Option<&Bound<'py, PyDict>>,
+                ) -> PyResult<Bound<'py, PyAny>> {
+                    self.eval_with(py, Call::$call, $a, $b, options)
+                }
+            )*
+        }
+    };
+}
+for_each_evaluation!(road_evaluations);

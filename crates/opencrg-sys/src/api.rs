@@ -265,17 +265,9 @@ pub unsafe extern "C" fn crgDataSetGetUtilityDataClosedTrack(
 
 // ---------------------------------------------------------------- settings
 
-fn set_value(table: &mut Settings, id: c_uint, value: Value) -> opencrg::Result<()> {
-    let r = match value {
-        Value::Int(i) => table.set_int(id, i),
-        Value::Double(d) => table.set_double(id, d),
-    };
-    r.map_err(Into::into)
-}
-
 /// Sets a modifier of a data set; 1, or 0 after a warning.
 fn set_modifier(func: &str, id: c_int, option: c_uint, value: Value) -> c_int {
-    guard(func, 0, || match on_road_mut(func, id, |r| set_value(r.modifiers_mut(), option, value)) {
+    guard(func, 0, || match on_road_mut(func, id, |r| r.modifiers_mut().set_value(option, value)) {
         Some(r) => ok(r, func),
         None => 0,
     })
@@ -754,14 +746,7 @@ fn eval2(
     b: Option<&mut f64>,
     f: impl FnOnce(&mut ContactPoint) -> opencrg::Result<(f64, f64)>,
 ) -> c_int {
-    let (Some(a), Some(b)) = (a, b) else { return 0 };
-    cp_call(func, cp_id, 0, |cp| match f(cp) {
-        Ok((x, y)) => {
-            (*a, *b) = (x, y);
-            1
-        }
-        Err(_) => 0,
-    })
+    two_out(a, b, || cp_call(func, cp_id, None, |cp| f(cp).ok()))
 }
 
 /// An evaluation giving one value: 1, or 0 when the output is missing or the id unknown,

@@ -101,14 +101,21 @@ impl ContactPoint {
     /// with the effects of [`ContactPoint::set_option_int`] and
     /// [`ContactPoint::set_option_double`]; a check switched off is removed.
     pub fn set_option(&mut self, option: crate::CpOption) -> Result<()> {
-        use crate::settings::Value;
         match option.entry() {
-            (id, Some(Value::Int(i))) => self.set_option_int(id, i),
-            (id, Some(Value::Double(d))) => self.set_option_double(id, d),
+            (id, Some(value)) => self.set_option_value(id, value),
             (id, None) => {
                 self.remove_option(id);
                 Ok(())
             }
+        }
+    }
+
+    /// Sets an option by identifier: [`ContactPoint::set_option_int`] or
+    /// [`ContactPoint::set_option_double`] as the value's type says.
+    pub fn set_option_value(&mut self, id: u32, value: crate::Value) -> Result<()> {
+        match value {
+            crate::Value::Int(i) => self.set_option_int(id, i),
+            crate::Value::Double(d) => self.set_option_double(id, d),
         }
     }
 
