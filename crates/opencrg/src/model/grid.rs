@@ -60,6 +60,25 @@ impl Clone for Grid {
 }
 
 impl Grid {
+    /// Asks the processor to start loading the values of the cell whose first corner
+    /// is (`iu`, `iv`): two rows. The address is only computed, never read.
+    #[inline(always)]
+    pub(crate) fn prefetch_cell(&self, iu: usize, iv: usize) {
+        #[cfg(target_arch = "x86_64")]
+        {
+            use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+            let p = self.z.as_ptr().wrapping_add(iu.wrapping_mul(self.nv).wrapping_add(iv));
+            // SAFETY: a prefetch never faults and reads nothing the program sees; the
+            // address is computed with wrapping arithmetic and never dereferenced.
+            unsafe {
+                _mm_prefetch(p.cast(), _MM_HINT_T0);
+                _mm_prefetch(p.wrapping_add(self.nv).cast(), _MM_HINT_T0);
+            }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        let _ = (iu, iv);
+    }
+
     /// The z value at (u index, v index).
     #[inline]
     pub fn at(&self, iu: usize, iv: usize) -> f32 {
@@ -230,18 +249,13 @@ impl PrefetchHint {
     pub(crate) fn prefetch(&self, g: &Grid, u_first: f64, u: f64, v: f64) {
         #[cfg(target_arch = "x86_64")]
         {
-            use std::arch::x86_64::{_mm_cvttsd_si64, _mm_prefetch, _mm_set_sd, _MM_HINT_T0};
+            use std::arch::x86_64::{_mm_cvttsd_si64, _mm_set_sd};
             let (eu, ev) = ((u - u_first) * self.inv_u_inc, (v - g.v_first) * self.inv_v_inc);
             // SAFETY: SSE2 is part of every x86_64 target. The conversions truncate
             // (out of range gives some far index: harmless, unlike the work Rust's
-            // saturating `as` does); the address is only computed, wrapping, never
-            // dereferenced; a prefetch never faults and reads nothing the program sees.
-            unsafe {
-                let (iu, iv) = (_mm_cvttsd_si64(_mm_set_sd(eu)) as usize, _mm_cvttsd_si64(_mm_set_sd(ev)) as usize);
-                let p = g.z.as_ptr().wrapping_add(iu.wrapping_mul(g.nv).wrapping_add(iv));
-                _mm_prefetch(p.cast(), _MM_HINT_T0);
-                _mm_prefetch(p.wrapping_add(g.nv).cast(), _MM_HINT_T0);
-            }
+            // saturating `as` does, as the prefetch reads nothing).
+            let (iu, iv) = unsafe { (_mm_cvttsd_si64(_mm_set_sd(eu)), _mm_cvttsd_si64(_mm_set_sd(ev))) };
+            g.prefetch_cell(iu as usize, iv as usize);
         }
         #[cfg(not(target_arch = "x86_64"))]
         let _ = (g, u_first, u, v);

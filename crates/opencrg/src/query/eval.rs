@@ -336,18 +336,50 @@ fn v_cell(g: &crate::grid::Grid, v: f64) -> (usize, f64) {
     (clamp_index(&mut fv, g.nv), fv)
 }
 
+/// Where a point of the common case (inside an evenly spaced grid, no smoothing zone)
+/// lies: its cell's interval indices and fractions, and its v (for the banking).
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct PlainCell {
+    iu: usize,
+    fu: f64,
+    iv: usize,
+    fv: f64,
+    v: f64,
+}
+
+impl PlainCell {
+    /// The cell of (u, v) when the point is of the common case; `None` otherwise.
+    #[inline(always)]
+    pub(crate) fn of(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<PlainCell> {
+        let g = &road.grid;
+        if !(plain_inside(road, options, u, v) && g.layout == VLayout::Indexed) {
+            return None;
+        }
+        let (iu, fu) = u_cell(&road.line, u);
+        let (iv, fv) = v_cell(g, v);
+        Some(PlainCell { iu, fu, iv, fv, v })
+    }
+
+    /// Asks the processor to start loading the cell's grid values (see
+    /// [`PrefetchHint`](crate::grid::PrefetchHint); here the exact cell is known).
+    #[inline(always)]
+    pub(crate) fn prefetch(&self, road: &Road) {
+        road.grid.prefetch_cell(self.iu, self.iv);
+    }
+
+    /// The elevation of the surface at the point.
+    #[inline(always)]
+    pub(crate) fn elevation(&self, road: &Road) -> Option<f64> {
+        surface(road, self.iu, self.fu, self.iv, self.fv, self.v, true, true)
+    }
+}
+
 /// Elevation at (u, v) for the common case only: inside an evenly spaced grid, no
 /// smoothing zone; `None` for every other case. Same answers as [`uv_to_z`], and it
 /// never panics, so a C entry point may call it before setting up its panic guard.
 #[inline(always)]
 pub(crate) fn uv_to_z_plain(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<f64> {
-    let g = &road.grid;
-    if !(plain_inside(road, options, u, v) && g.layout == VLayout::Indexed) {
-        return None;
-    }
-    let (iu, fu) = u_cell(&road.line, u);
-    let (iv, fv) = v_cell(g, v);
-    surface(road, iu, fu, iv, fv, v, true, true)
+    PlainCell::of(road, options, u, v)?.elevation(road)
 }
 
 /// Elevation at (u, v) with the given options; `None` when a border mode refuses.
