@@ -123,7 +123,7 @@ mod tests {
     use std::sync::Arc;
 
     /// Batches equal the single calls bit for bit, failures as NaN, on points inside,
-    /// on the borders, outside, and NaN, in every v border mode.
+    /// on the borders, outside, and NaN, in every v border mode and with a smoothing zone.
     #[test]
     fn batches_equal_single_calls() {
         let road = RoadSpec::straight(20.0, 4.0, 0.1, 0.25)
@@ -143,9 +143,13 @@ mod tests {
         u[3] = f64::NAN;
         v[4] = 20.0;
         u[5] = 20.0;
-        for mode in 0..=4 {
+        // Border modes 0 to 4 in v; then mode 4 with a smoothing zone (no lean path).
+        for mode in 0..=5 {
             let mut single = ContactPoint::new(road.clone());
-            single.set_option_int(crate::settings::opt::BORDER_MODE_V, mode).unwrap();
+            single.set_option_int(crate::settings::opt::BORDER_MODE_V, mode.min(4)).unwrap();
+            if mode == 5 {
+                single.set_option_double(crate::settings::opt::SMOOTH_U_BEGIN, 3.0).unwrap();
+            }
             let mut batch = single.clone();
             let mut z = vec![0.0; u.len()];
             let ok = batch.uv_to_z_many(&u, &v, &mut z);
