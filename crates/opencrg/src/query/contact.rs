@@ -231,6 +231,12 @@ impl ContactPoint {
     pub fn xy_to_z(&mut self, x: f64, y: f64) -> Result<f64> {
         let (u, v) = self.xy_to_uv(x, y)?;
         // Not `uv_to_z`: its prefetch would come too late to help here.
+        self.z_of_found(u, v)
+    }
+
+    /// The elevation [`ContactPoint::xy_to_z`] gives at the (u, v) its search found.
+    #[inline]
+    pub(crate) fn z_of_found(&self, u: f64, v: f64) -> Result<f64> {
         elevation(eval::uv_to_z(&self.road, &self.eval, u, v))
     }
 
