@@ -51,7 +51,7 @@ fn seeds() -> Vec<Vec<u8>> {
             .with_bank(|u| 0.02 - 0.001 * u)
             .with_elevation(|u, v| (u * 1.3).sin() * 0.01 + v * 0.003)
             .with_header_text(header),
-        RoadSpec::straight(5.0, 2.0, 0.5, 0.0)
+        RoadSpec::straight(5.0, 2.0, 0.5, 0.5)
             .with_sections(vec![-1.0, -0.6, 0.1, 0.2, 1.0])
             .with_heading(|u| -0.3 * u)
             .with_elevation(|u, v| if (u * 10.0) as i64 % 7 == 3 && v > 0.5 { f64::NAN } else { 0.1 * v }),
