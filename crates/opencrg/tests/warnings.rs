@@ -51,3 +51,15 @@ fn text_data_ending_before_the_declared_end() {
     let road = load(&text_road("$!***\n$ROAD_CRG", 5));
     assert!(road.warnings().is_empty(), "{:?}", road.warnings());
 }
+
+#[test]
+fn option_keywords_the_reference_does_not_know() {
+    // CHECK_PRO and CHECK_WGS (written by the MATLAB tools) are unknown to the reference,
+    // which warns and ignores them; its logging options it knows and ignores quietly.
+    let opts = "$ROAD_CRG_OPTS\nCHECK_PRO = 0.005\nLOG_STAT = -1\nCHECK_WGS = 10\n$\n$ROAD_CRG";
+    let road = load(&text_road(opts, 5));
+    let warned: Vec<&String> = road.warnings().iter().filter(|w| w.contains("unknown keyword")).collect();
+    assert_eq!(warned.len(), 2, "{:?}", road.warnings());
+    assert!(warned[0].starts_with("road.crg:2: CHECK_PRO"), "{:?}", warned);
+    assert!(warned[1].starts_with("road.crg:4: CHECK_WGS"), "{:?}", warned);
+}

@@ -14,18 +14,11 @@ use std::path::{Path, PathBuf};
 /// Deepest chain of file references followed.
 pub const MAX_REFERENCE_DEPTH: usize = 16;
 
-/// Keywords of `$ROAD_CRG_OPTS` that the reference reads but that change nothing here.
-const IGNORED_OPTION_KEYWORDS: [&str; 9] = [
-    "check_pro",
-    "check_wgs",
-    "log_msgs",
-    "log_eval",
-    "log_eval_freq",
-    "log_hist",
-    "log_hist_freq",
-    "log_stat",
-    "log_stat_freq",
-];
+/// Keywords of `$ROAD_CRG_OPTS` that the reference knows but that change nothing (its
+/// logging settings). Others it does not know, such as `CHECK_PRO` and `CHECK_WGS` of
+/// the MATLAB tools, get the unknown-keyword warning, as the reference warns of them.
+const IGNORED_OPTION_KEYWORDS: [&str; 7] =
+    ["log_msgs", "log_eval", "log_eval_freq", "log_hist", "log_hist_freq", "log_stat", "log_stat_freq"];
 
 /// The bytes of a file: memory-mapped when possible.
 pub(crate) enum FileBytes {
