@@ -5,7 +5,9 @@
  * that offers it; the driver builds it twice and compares the two outputs.
  *
  * usage: difftest_client SCRIPT   (run from the folder holding the script's files;
- *        DIFFTEST_MSG_LEVEL=N in the environment shows the library's messages)
+ *        DIFFTEST_MSG_LEVEL=N in the environment shows the library's messages;
+ *        DIFFTEST_WARNINGS=1 adds, after load, check and apply, a line saying whether
+ *        the library warned and whether it reported an error, its texts unseen)
  *
  * Script commands, one a line (numbers in any form strtod reads):
  *   load FILE           crgLoaderReadFile; the other commands need a data set
@@ -26,6 +28,27 @@
 
 static int gId = 0;
 static int gCp = -1;
+
+/* DIFFTEST_WARNINGS: whether a warning and whether an error came since the last report. */
+static int gWarnings = 0;
+static int gWarned = 0, gFailed = 0;
+
+static int noteLevel(int level, char *message)
+{
+    (void)message;
+    if (level == dCrgMsgLevelWarn)
+        gWarned = 1;
+    else if (level == dCrgMsgLevelFatal)
+        gFailed = 1;
+    return 0;
+}
+
+static void reportLevels(const char *cmd)
+{
+    if (gWarnings)
+        printf("msgs %s warned %d failed %d\n", cmd, gWarned, gFailed);
+    gWarned = gFailed = 0;
+}
 
 static void pr(double d)
 {
@@ -117,6 +140,12 @@ int main(int argc, char **argv)
     /* DIFFTEST_MSG_LEVEL=N shows the library's messages, to find out why answers differ. */
     setvbuf(stdout, NULL, _IOLBF, 0); /* a hung call shows after the last complete line */
     crgMsgSetLevel(getenv("DIFFTEST_MSG_LEVEL") ? atoi(getenv("DIFFTEST_MSG_LEVEL")) : dCrgMsgLevelNone);
+    if (getenv("DIFFTEST_WARNINGS") && !getenv("DIFFTEST_MSG_LEVEL"))
+    {
+        gWarnings = 1;
+        crgMsgSetLevel(dCrgMsgLevelWarn);
+        crgMsgSetCallback(noteLevel);
+    }
     while (fgets(line, sizeof line, script))
     {
         char cmd[32], arg[4000];
@@ -130,15 +159,16 @@ int main(int argc, char **argv)
                 continue;
             gId = crgLoaderReadFile(arg);
             printf("load %d\n", gId > 0);
+            reportLevels("load");
             if (gId <= 0)
                 break;
             continue;
         }
         sscanf(line, "%*s %lf %lf %lf %lf", &a, &b, &c, &d);
         if (!strcmp(cmd, "check"))
-            printf("check %d\n", crgCheck(gId) ? 1 : 0);
+            printf("check %d\n", crgCheck(gId) ? 1 : 0), reportLevels("check");
         else if (!strcmp(cmd, "apply"))
-            crgDataSetModifiersApply(gId), printf("apply\n");
+            crgDataSetModifiersApply(gId), printf("apply\n"), reportLevels("apply");
         else if (!strcmp(cmd, "modrm"))
             printf("modrm %d\n", crgDataSetModifierRemoveAll(gId));
         else if (!strcmp(cmd, "modsetdef"))

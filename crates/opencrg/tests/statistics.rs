@@ -1,6 +1,7 @@
 //! The statistics a road reports (what the C API prints after loading) against a road
 //! generated with known figures.
 
+use opencrg::refline::LineFinding;
 use opencrg::report::Event;
 use opencrg::synth::RoadSpec;
 use opencrg::{LoadOptions, Road};
@@ -37,4 +38,64 @@ fn figures_of_a_generated_road() {
     // Without asking, no grid scan and no statistics event.
     let mut quiet = spec.build().unwrap();
     assert!(!quiet.take_events().iter().any(|e| matches!(e, Event::Prepared(_))));
+}
+
+/// A text road 4 m long at 1 m, two long sections, with the given extra `$ROAD_CRG`
+/// lines and reference line channels (`phi` heading values, `xy` x/y points).
+fn line_road(extra: &str, phi: Option<[f64; 5]>, xy: bool) -> Road {
+    let mut s = format!(
+        "$ROAD_CRG\nREFERENCE_LINE_START_U = 0\nREFERENCE_LINE_END_U = 4\nREFERENCE_LINE_INCREMENT = 1\n\
+         LONG_SECTION_V_INCREMENT = 0.5\n{extra}$\n$KD_Definition\n#:LRFI\n"
+    );
+    if xy {
+        s += "D:reference line x,m\nD:reference line y,m\n";
+    }
+    if phi.is_some() {
+        s += "D:reference line phi,rad\n";
+    }
+    s += "D:long section 1,m\nD:long section 2,m\n$\n$$$$$$$$$$\n";
+    for i in 0..5 {
+        if xy {
+            s += &format!("{:10.4}{:10.4}", i as f64, 0.0);
+        }
+        if let Some(phi) = phi {
+            s += &format!("{:12.8}", phi[i]);
+        }
+        s += &format!("{:10.4}{:10.4}\n", 0.1, 0.2);
+    }
+    Road::from_bytes(s.into_bytes(), "line.crg").unwrap()
+}
+
+fn findings(mut road: Road) -> Vec<LineFinding> {
+    road.take_events().into_iter().filter_map(|e| if let Event::Line(f) = e { Some(f) } else { None }).collect()
+}
+
+/// What building the reference line finds inconsistent or incomplete, each case once,
+/// and nothing where the file is consistent.
+#[test]
+fn reference_line_findings() {
+    // Straight: no end point; an end point 1 mm off; the exact end point.
+    assert_eq!(findings(line_road("", None, false)), [LineFinding::StraightEndComputed { end: (4.0, 0.0) }]);
+    let off = findings(line_road("REFERENCE_LINE_END_X = 4.001\nREFERENCE_LINE_END_Y = 0\n", None, false));
+    assert!(
+        matches!(off[..], [LineFinding::StraightEndDiffers { gap }] if (gap.0 - 0.001).abs() < 1e-9 && gap.1 == 0.0),
+        "{off:?}"
+    );
+    assert_eq!(findings(line_road("REFERENCE_LINE_END_X = 4.0003\nREFERENCE_LINE_END_Y = 0\n", None, false)), []);
+    // A heading channel (turning left 0.1 rad per metre) against an end point that does
+    // not follow from it, and against the end it gives.
+    let phi: [f64; 5] = [0.0, 0.1, 0.2, 0.3, 0.4];
+    let end: (f64, f64) = (1..5).fold((0.0, 0.0), |(x, y), i| (x + phi[i].cos(), y + phi[i].sin()));
+    let far = findings(line_road("REFERENCE_LINE_END_X = 4\nREFERENCE_LINE_END_Y = 0\n", Some(phi), false));
+    assert!(matches!(far[..], [LineFinding::HeadingMissesStart { .. }]), "{far:?}");
+    let given = format!("REFERENCE_LINE_END_X = {:.12}\nREFERENCE_LINE_END_Y = {:.12}\n", end.0, end.1);
+    assert_eq!(findings(line_road(&given, Some(phi), false)), []);
+    // The slope integrated back from an end z that does not follow from it.
+    let slope = "REFERENCE_LINE_END_X = 4\nREFERENCE_LINE_END_Y = 0\nREFERENCE_LINE_START_S = 0.01\n";
+    assert_eq!(findings(line_road(&format!("{slope}REFERENCE_LINE_END_Z = 0.04\n"), None, false)), []);
+    let z = findings(line_road(&format!("{slope}REFERENCE_LINE_END_Z = 0.05\n"), None, false));
+    assert!(matches!(z[..], [LineFinding::SlopeMissesStart { gap }] if (gap - 0.01).abs() < 1e-9), "{z:?}");
+    // x/y channels.
+    let xy = findings(line_road("REFERENCE_LINE_END_X = 4\nREFERENCE_LINE_END_Y = 0\n", None, true));
+    assert_eq!(xy, [LineFinding::XyChannelsNotUsed]);
 }

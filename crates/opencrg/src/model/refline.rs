@@ -14,6 +14,42 @@ pub struct Defined {
     pub z_start: bool,
     /// `REFERENCE_LINE_END_Z` was given.
     pub z_end: bool,
+    /// The data has reference line x and y channels (they set the u axis; x/y are
+    /// computed from the start point and the heading all the same).
+    pub xy_channels: bool,
+}
+
+/// What building the reference line found inconsistent or incomplete in the file:
+/// worth a warning, as the reference warns of the same.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum LineFinding {
+    /// A straight line (no heading channel) without both `REFERENCE_LINE_END_X` and
+    /// `_Y`: its end is the one its start, heading and length give.
+    StraightEndComputed {
+        /// The end point used (x, y), m.
+        end: (f64, f64),
+    },
+    /// A straight line's end, from its start, heading and length, lies more than 0.5 mm
+    /// from the end point the header gives.
+    StraightEndDiffers {
+        /// Header's end minus the line's end (x, y), m.
+        gap: (f64, f64),
+    },
+    /// The heading channel integrated back from the header's end point misses the
+    /// header's start point by more than 1e-6 times the line's length (the line is
+    /// blended between both integrations).
+    HeadingMissesStart {
+        /// Header's start minus the backward integration's start (x, y), m.
+        gap: (f64, f64),
+    },
+    /// The slope integrated back from `REFERENCE_LINE_END_Z` misses
+    /// `REFERENCE_LINE_START_Z` by more than 1e-6 times the line's length.
+    SlopeMissesStart {
+        /// The absolute difference, m.
+        gap: f64,
+    },
+    /// The data's x and y channels give the u axis only; x/y are integrated.
+    XyChannelsNotUsed,
 }
 
 /// The reference line of a road.
@@ -117,7 +153,7 @@ impl RefLine {
     /// The releases ([`Compat::Release201`]) start the forward pass from the point the
     /// line already holds (the origin after loading, or the backward pass's first point)
     /// instead of the header's start point.
-    pub(crate) fn integrate_xy(&mut self, compat: Compat) {
+    pub(crate) fn integrate_xy(&mut self, compat: Compat, findings: &mut Vec<LineFinding>) {
         let from_start = compat == Compat::Upstream;
         let n = self.n;
         let inc = self.u_inc;
@@ -128,10 +164,17 @@ impl RefLine {
                 self.x[i] = self.x_first + i as f64 * inc * c;
                 self.y[i] = self.y_first + i as f64 * inc * s;
             }
-            if !both_ends {
+            if both_ends {
+                let gap = (self.x_last - self.x[n - 1], self.y_last - self.y[n - 1]);
+                if gap.0.abs() > 5e-4 || gap.1.abs() > 5e-4 {
+                    findings.push(LineFinding::StraightEndDiffers { gap });
+                }
+            } else {
                 self.x_last = self.x[n - 1];
                 self.y_last = self.y[n - 1];
+                findings.push(LineFinding::StraightEndComputed { end: (self.x_last, self.y_last) });
             }
+            self.note_xy_channels(findings);
             return;
         };
         if both_ends {
@@ -140,6 +183,10 @@ impl RefLine {
             for i in (1..n).rev() {
                 self.x[i - 1] = self.x[i] - inc * phi[i].cos();
                 self.y[i - 1] = self.y[i] - inc * phi[i].sin();
+            }
+            let gap = (self.x_first - self.x[0], self.y_first - self.y[0]);
+            if gap.0.hypot(gap.1) > 1e-6 * (self.u_last - self.u_first) {
+                findings.push(LineFinding::HeadingMissesStart { gap });
             }
             if from_start {
                 self.x[0] = self.x_first;
@@ -162,11 +209,18 @@ impl RefLine {
             self.x_last = self.x[n - 1];
             self.y_last = self.y[n - 1];
         }
+        self.note_xy_channels(findings);
+    }
+
+    fn note_xy_channels(&self, findings: &mut Vec<LineFinding>) {
+        if self.defined.xy_channels {
+            findings.push(LineFinding::XyChannelsNotUsed);
+        }
     }
 
     /// Computes the reference line z from the slope channel or the constant start
     /// slope; nothing to do (and false) when neither is given.
-    pub(crate) fn integrate_z(&mut self) -> bool {
+    pub(crate) fn integrate_z(&mut self, findings: &mut Vec<LineFinding>) -> bool {
         if self.slope_first == 0.0 && self.slope.is_none() {
             return false;
         }
@@ -178,6 +232,10 @@ impl RefLine {
             z[n - 1] = self.z_last;
             for i in (1..n).rev() {
                 z[i - 1] = z[i] - slope_at(&self.slope, i) * inc;
+            }
+            let gap = (z[0] - self.z_first).abs();
+            if gap > (self.u_last - self.u_first) * 1e-6 {
+                findings.push(LineFinding::SlopeMissesStart { gap });
             }
             z[0] = self.z_first;
             for i in 0..n.saturating_sub(2) {

@@ -3,7 +3,7 @@
 //! a front end (the C API prints them as messages) to pass on.
 
 use crate::grid::Grid;
-use crate::refline::RefLine;
+use crate::refline::{LineFinding, RefLine};
 use std::path::PathBuf;
 
 /// Figures of a prepared road.
@@ -48,6 +48,8 @@ pub enum Event {
     LineFromHeading,
     /// The reference line z was integrated from the slope.
     LineZFromSlope,
+    /// Building the reference line found the file inconsistent or incomplete.
+    Line(LineFinding),
     /// The road was prepared (after loading, or after modifiers that change data).
     Prepared(Box<Statistics>),
     /// Whether the reference line can be closed, and over which u range.

@@ -59,10 +59,13 @@ impl Road {
         if self.line.phi.is_some() {
             self.note(Event::LineFromHeading);
         }
-        self.line.integrate_xy(self.compat);
-        if self.line.integrate_z() {
+        let mut findings = Vec::new();
+        self.line.integrate_xy(self.compat, &mut findings);
+        self.events.extend(findings.drain(..).map(Event::Line));
+        if self.line.integrate_z(&mut findings) {
             self.note(Event::LineZFromSlope);
         }
+        self.events.extend(findings.into_iter().map(Event::Line));
         self.grid.fold_mean();
         if self.report_statistics {
             let statistics = self.statistics();

@@ -443,6 +443,7 @@ impl RefLine {
                 y_end: p.top_file_gives.y_end,
                 z_start: p.top_file_gives.z_start,
                 z_end: p.top_file_gives.z_end,
+                xy_channels: cols.x.is_some(),
             },
             trig: Trig::default(),
             closed: None,
