@@ -5,7 +5,6 @@
 //! the reference uses.
 
 use crate::msg::{self, DEBUG, NOTICE, WARN};
-use opencrg::refline::LineFinding;
 use opencrg::report::{Event, Statistics};
 
 /// Sends one message per event (and per line of the statistics block), in order.
@@ -18,7 +17,7 @@ pub(crate) fn send(func: &str, events: Vec<Event>) {
             }
             Event::LineFromHeading => msg::send(NOTICE, &format!("{func}: reference line x/y integrated from the heading channel")),
             Event::LineZFromSlope => msg::send(NOTICE, &format!("{func}: reference line z integrated from the slope")),
-            Event::Line(finding) => msg::send(WARN, &format!("{func}: {}", line_finding(finding))),
+            Event::Line(finding) => msg::send(WARN, &format!("{func}: {finding}")),
             Event::Prepared(s) => statistics(func, &s),
             Event::ClosedTrack(Some((a, b))) => {
                 msg::send(NOTICE, &format!("{func}: the reference line can be closed, over u = {a:.3} .. {b:.3}"))
@@ -38,34 +37,6 @@ pub(crate) fn send(func: &str, events: Vec<Event>) {
                 ),
             ),
         }
-    }
-}
-
-/// A finding of the reference line's construction, in words.
-fn line_finding(finding: LineFinding) -> String {
-    match finding {
-        LineFinding::StraightEndComputed { end } => format!(
-            "straight reference line without REFERENCE_LINE_END_X and _Y: its end ({:.4}, {:.4}) \
-             is taken from the start point, heading and length",
-            end.0, end.1
-        ),
-        LineFinding::StraightEndDiffers { gap } => format!(
-            "the end point the header gives lies ({:.4}, {:.4}) m from the end of the straight \
-             reference line its start point, heading and length give",
-            gap.0, gap.1
-        ),
-        LineFinding::HeadingMissesStart { gap } => format!(
-            "the heading channel, integrated back from the header's end point, misses its start \
-             point by ({:.4}, {:.4}) m; the line is blended between both ends",
-            gap.0, gap.1
-        ),
-        LineFinding::SlopeMissesStart { gap } => format!(
-            "the slope, integrated back from REFERENCE_LINE_END_Z, misses REFERENCE_LINE_START_Z \
-             by {gap:.5} m; the line z is blended between both ends"
-        ),
-        LineFinding::XyChannelsNotUsed => "the reference line x and y channels set the u axis only; \
-             x/y are integrated from the start point and the heading"
-            .to_string(),
     }
 }
 

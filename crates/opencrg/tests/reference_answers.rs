@@ -55,7 +55,7 @@ fn nan_as_first_slope_or_banking_value_loads() {
         .map(|i| if i == 0 { vec![f64::NAN, f64::NAN, 0.0, 0.0, 0.0] } else { vec![0.1, 0.0, 0.0, 0.0, 0.0] })
         .collect();
     let road = load_text(&lrfi("REFERENCE_LINE_INCREMENT = 1.0\nLONG_SECTION_V_INCREMENT = 0.5\n", &channels, &data));
-    assert!(road.warnings().is_empty(), "{:?}", road.warnings());
+    assert!(!road.warnings().iter().any(|w| w.contains("NaN")), "{:?}", road.warnings());
     let c = cp(road);
     assert!((c.uv_to_z(3.0, 0.0).unwrap() - 0.3).abs() < 1e-9);
     // NaN later in a channel also loads, with a warning naming the record.

@@ -5,7 +5,8 @@ use opencrg::Road;
 
 fn text_road(road_section: &str, rows: usize) -> String {
     let mut s = format!("{road_section}\nREFERENCE_LINE_START_U = 0.0\nREFERENCE_LINE_END_U = 4.0\n");
-    s += "REFERENCE_LINE_INCREMENT = 1.0\nLONG_SECTION_V_INCREMENT = 0.5\n$\n";
+    s += "REFERENCE_LINE_INCREMENT = 1.0\nLONG_SECTION_V_INCREMENT = 0.5\n";
+    s += "REFERENCE_LINE_END_X = 4.0\nREFERENCE_LINE_END_Y = 0.0\n$\n";
     s += "$KD_Definition\n#:LRFI\nD:long section 1,m\nD:long section 2,m\n$\n";
     s += &"$".repeat(80);
     s.push('\n');

@@ -52,6 +52,40 @@ pub enum LineFinding {
     XyChannelsNotUsed,
 }
 
+impl std::fmt::Display for LineFinding {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match *self {
+            LineFinding::StraightEndComputed { end } => write!(
+                f,
+                "straight reference line without REFERENCE_LINE_END_X and _Y: its end ({:.4}, {:.4}) \
+                 is taken from the start point, heading and length",
+                end.0, end.1
+            ),
+            LineFinding::StraightEndDiffers { gap } => write!(
+                f,
+                "the end point the header gives lies ({:.4}, {:.4}) m from the end of the straight \
+                 reference line its start point, heading and length give",
+                gap.0, gap.1
+            ),
+            LineFinding::HeadingMissesStart { gap } => write!(
+                f,
+                "the heading channel, integrated back from the header's end point, misses its start \
+                 point by ({:.4}, {:.4}) m; the line is blended between both ends",
+                gap.0, gap.1
+            ),
+            LineFinding::SlopeMissesStart { gap } => write!(
+                f,
+                "the slope, integrated back from REFERENCE_LINE_END_Z, misses REFERENCE_LINE_START_Z \
+                 by {gap:.5} m; the line z is blended between both ends"
+            ),
+            LineFinding::XyChannelsNotUsed => f.write_str(
+                "the reference line x and y channels set the u axis only; x/y are integrated from the \
+                 start point and the heading",
+            ),
+        }
+    }
+}
+
 /// The reference line of a road.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RefLine {

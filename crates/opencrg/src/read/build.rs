@@ -90,6 +90,16 @@ impl Road {
         let imported: Vec<_> = road.header.references.clone();
         road.events.extend(imported.into_iter().map(crate::report::Event::FileImported));
         road.prepare();
+        // What building the reference line found is part of reading the file: a warning
+        // naming the file (after modifiers, an event only).
+        let (found, events): (Vec<_>, Vec<_>) =
+            std::mem::take(&mut road.events).into_iter().partition(|e| matches!(e, crate::report::Event::Line(_)));
+        road.events = events;
+        for event in found {
+            if let crate::report::Event::Line(finding) = event {
+                road.header.warnings.push(format!("{}: {finding}", path.display()));
+            }
+        }
         Ok(road)
     }
 }
