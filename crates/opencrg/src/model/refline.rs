@@ -246,6 +246,7 @@ impl RefLine {
         self.note_xy_channels(findings);
     }
 
+    /// Notes x/y channels, which set the u axis but not the line.
     fn note_xy_channels(&self, findings: &mut Vec<LineFinding>) {
         if self.defined.xy_channels {
             findings.push(LineFinding::XyChannelsNotUsed);
