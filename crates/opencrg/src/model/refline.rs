@@ -186,7 +186,8 @@ impl RefLine {
     ///
     /// The releases ([`Compat::Release201`]) start the forward pass from the point the
     /// line already holds (the origin after loading, or the backward pass's first point)
-    /// instead of the header's start point.
+    /// instead of the header's start point. End points that disagree with the line, or a
+    /// missing one, go to `findings`.
     pub(crate) fn integrate_xy(&mut self, compat: Compat, findings: &mut Vec<LineFinding>) {
         let from_start = compat == Compat::Upstream;
         let n = self.n;
@@ -208,7 +209,6 @@ impl RefLine {
                 self.y_last = self.y[n - 1];
                 findings.push(LineFinding::StraightEndComputed { end: (self.x_last, self.y_last) });
             }
-            self.note_xy_channels(findings);
             return;
         };
         if both_ends {
@@ -243,18 +243,11 @@ impl RefLine {
             self.x_last = self.x[n - 1];
             self.y_last = self.y[n - 1];
         }
-        self.note_xy_channels(findings);
-    }
-
-    /// Notes x/y channels, which set the u axis but not the line.
-    fn note_xy_channels(&self, findings: &mut Vec<LineFinding>) {
-        if self.defined.xy_channels {
-            findings.push(LineFinding::XyChannelsNotUsed);
-        }
     }
 
     /// Computes the reference line z from the slope channel or the constant start
-    /// slope; nothing to do (and false) when neither is given.
+    /// slope; nothing to do (and false) when neither is given. An end z that disagrees
+    /// with the slope goes to `findings`.
     pub(crate) fn integrate_z(&mut self, findings: &mut Vec<LineFinding>) -> bool {
         if self.slope_first == 0.0 && self.slope.is_none() {
             return false;

@@ -3,7 +3,7 @@
 use crate::compat::Compat;
 use crate::grid::{Grid, PrefetchHint};
 use crate::header::{DataFormat, Header};
-use crate::refline::RefLine;
+use crate::refline::{LineFinding, RefLine};
 use crate::report::{Event, Statistics};
 use crate::sample_index::SampleIndex;
 use crate::settings::Settings;
@@ -61,6 +61,9 @@ impl Road {
         }
         let mut findings = Vec::new();
         self.line.integrate_xy(self.compat, &mut findings);
+        if self.line.defined.xy_channels {
+            findings.push(LineFinding::XyChannelsNotUsed);
+        }
         self.events.extend(findings.drain(..).map(Event::Line));
         if self.line.integrate_z(&mut findings) {
             self.note(Event::LineZFromSlope);

@@ -16,19 +16,24 @@ const BLOCK: usize = 16;
 /// How many blocks ahead of the one it computes the elevation batch locates cells.
 const LEAD: usize = 3;
 
+/// The values of an answer, or NaN for each where the call failed; counts successes.
+#[inline(always)]
+fn settle<const K: usize>(answer: Result<[f64; K]>, ok: &mut usize) -> [f64; K] {
+    match answer {
+        Ok(values) => {
+            *ok += 1;
+            values
+        }
+        Err(_) => [f64::NAN; K],
+    }
+}
+
 /// Writes one answer per point: the value, or NaN in every output where the call failed;
 /// returns how many succeeded.
 fn each<const K: usize>(n: usize, out: &mut [&mut [f64]; K], mut f: impl FnMut(usize) -> Result<[f64; K]>) -> usize {
     let mut ok = 0;
     for i in 0..n {
-        let values = match f(i) {
-            Ok(values) => {
-                ok += 1;
-                values
-            }
-            Err(_) => [f64::NAN; K],
-        };
-        for (slot, value) in out.iter_mut().zip(values) {
+        for (slot, value) in out.iter_mut().zip(settle(f(i), &mut ok)) {
             slot[i] = value;
         }
     }
@@ -72,13 +77,7 @@ impl ContactPoint {
                     Some(z) => Ok(z),
                     None => self.uv_to_z_general(u[i], v[i]),
                 };
-                *out = match value {
-                    Ok(z) => {
-                        ok += 1;
-                        z
-                    }
-                    Err(_) => f64::NAN,
-                };
+                [*out] = settle(value.map(|z| [z]), &mut ok);
             }
         }
         ok
@@ -112,13 +111,7 @@ impl ContactPoint {
         // The point found last, its elevation still to compute.
         let mut pending: Option<(usize, f64, f64)> = None;
         let mut finish = |cp: &Self, (i, u, v): (usize, f64, f64), z: &mut [f64]| {
-            z[i] = match cp.z_of_found(u, v) {
-                Ok(value) => {
-                    ok += 1;
-                    value
-                }
-                Err(_) => f64::NAN,
-            };
+            [z[i]] = settle(cp.z_of_found(u, v).map(|z| [z]), &mut ok);
         };
         for i in 0..n {
             let found = self.xy_to_uv(x[i], y[i]);

@@ -92,14 +92,14 @@ impl Road {
         road.prepare();
         // What building the reference line found is part of reading the file: a warning
         // naming the file (after modifiers, an event only).
-        let (found, events): (Vec<_>, Vec<_>) =
-            std::mem::take(&mut road.events).into_iter().partition(|e| matches!(e, crate::report::Event::Line(_)));
-        road.events = events;
-        for event in found {
-            if let crate::report::Event::Line(finding) = event {
-                road.header.warnings.push(format!("{}: {finding}", path.display()));
+        let warnings = &mut road.header.warnings;
+        road.events.retain(|event| match event {
+            crate::report::Event::Line(finding) => {
+                warnings.push(format!("{}: {finding}", path.display()));
+                false
             }
-        }
+            _ => true,
+        });
         Ok(road)
     }
 }
