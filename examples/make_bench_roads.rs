@@ -1,6 +1,8 @@
 //! Generates the benchmark roads into a folder (default: target/bench-roads):
-//! 500 m x 4 m at 1 cm in KRBI (about 80 MB) and in LRFI, and a 10 km road with a
-//! winding reference line (KRBI, 1 cm along, 0.5 m across).
+//! 500 m x 4 m at 1 cm in KRBI (about 80 MB) and in LRFI, a 10 km road with a
+//! winding reference line (KRBI, 1 cm along, 0.5 m across), and a 2 km winding road
+//! with heading, slope and banking channels (KRBI, 1 cm along, 5 cm across, about
+//! 65 MB of grid; curve radii down to about 125 m).
 //!
 //!     cargo run --release -p opencrg --example make_bench_roads -- target/bench-roads
 
@@ -26,6 +28,17 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .with_elevation(surface)
             .build()?;
         opencrg::write(&winding, &path, DataFormat::Krbi)?;
+    }
+    println!("{}", path.display());
+    let path = dir.join("winding_sloped_banked_2km_krbi.crg");
+    if !path.exists() {
+        let hilly = RoadSpec::straight(2_000.0, 4.0, 0.01, 0.05)
+            .with_heading(|u| 3.0 * (u / 400.0).sin() + u / 2000.0)
+            .with_slope(|u| 0.04 * (u / 150.0).sin())
+            .with_bank(|u| 0.03 * (u / 90.0 + 1.0).sin())
+            .with_elevation(surface)
+            .build()?;
+        opencrg::write(&hilly, &path, DataFormat::Krbi)?;
     }
     println!("{}", path.display());
     Ok(())

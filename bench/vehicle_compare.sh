@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# The vehicle workload (bench/vehicle_bench.c) against this project's library and, when
+# given, against another library with the same API (for example the reference C library,
+# built by you outside this project with gcc -O2), in alternating runs; prints per case
+# the median and the range of every figure and the ratio of the medians.
+#
+# usage: bench/vehicle_compare.sh [OTHER_LIB OTHER_INCLUDE_DIR]
+#   OTHER_LIB           a static library (.a) offering the classic OpenCRG C API
+#   OTHER_INCLUDE_DIR   the folder holding its crgBaseLib.h
+# Environment: ROADS (default target/bench-roads), RUNS (alternating runs per road,
+# default 5), STEPS (steps per pass, default 50000), ROAD_FILES (default: the straight
+# 80 MB road and the winding road with slope and banking), VB_* (passed to the program,
+# see bench/vehicle_bench.c), MARKDOWN=1 for Markdown tables.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+roads=${ROADS:-target/bench-roads}
+runs=${RUNS:-5}
+steps=${STEPS:-50000}
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+
+cargo build --release -q -p opencrg-capi
+cargo run --release -q -p opencrg --example make_bench_roads -- "$roads" >/dev/null
+cc -O2 -Iinclude bench/vehicle_bench.c target/release/libopencrg.a -lm -lpthread -ldl -o "$out/vehicle_opencrg"
+libs=(opencrg)
+if [ $# -ge 2 ]; then
+    cc -O2 -I"$2" bench/vehicle_bench.c "$1" -lm -lpthread -o "$out/vehicle_other"
+    libs+=(other)
+fi
+files=${ROAD_FILES:-"track_500m_krbi winding_sloped_banked_2km_krbi"}
+for f in $files; do
+    for r in $(seq "$runs"); do
+        for l in "${libs[@]}"; do
+            "$out/vehicle_$l" "$roads/$f.crg" "$steps" | sed "s/^/$f $l /" >>"$out/results"
+        done
+    done
+done
+python3 bench/vehicle_report.py "$out/results"
