@@ -46,7 +46,7 @@ pub fn facts(road: &Road, path: &str) -> Json {
     let (u0, u1) = road.u_range();
     let (v0, v1) = road.v_range();
     let (du, dv) = road.increments();
-    let nan = g.z.iter().filter(|z| z.is_nan()).count();
+    let nan = g.values().iter().filter(|z| z.is_nan()).count();
     json!({
         "file": path,
         "format": road.format().name(),
@@ -115,7 +115,7 @@ pub fn text(road: &Road, path: &str) -> String {
         },
     );
     line("elevation", format!("{:.4} .. {:.4} m", s.z_min, s.z_max));
-    line("NaN cells", format!("{}", g.z.iter().filter(|z| z.is_nan()).count()));
+    line("NaN cells", format!("{}", g.values().iter().filter(|z| z.is_nan()).count()));
     line("options", settings_text(road.options()));
     line("modifiers", settings_text(road.modifiers()));
     for w in road.warnings() {

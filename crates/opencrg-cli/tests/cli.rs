@@ -109,7 +109,7 @@ fn convert_round_trips_through_every_format() {
         assert_eq!(back.format().name(), *format);
         let (a, b) = (original.grid(), back.grid());
         assert_eq!((a.nu, a.nv), (b.nu, b.nv));
-        for (x, y) in a.z.iter().zip(&b.z) {
+        for (x, y) in a.values().iter().zip(b.values()) {
             assert!((x.is_nan() && y.is_nan()) || (x - y).abs() <= 1e-6 * x.abs().max(1.0), "{format}: {x} vs {y}");
         }
         assert_eq!(back.u_range(), original.u_range());

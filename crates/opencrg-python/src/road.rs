@@ -211,7 +211,8 @@ impl Road {
             return Ok(grid.clone_ref(py));
         }
         let g = self.inner.grid();
-        let array = PyArray1::from_slice(py, &g.z).reshape([g.nu, g.nv])?;
+        // Stored long section by long section: an nv x nu array, seen as its transpose.
+        let array = PyArray1::from_slice(py, g.values()).reshape([g.nv, g.nu])?.transpose()?;
         array.getattr("flags")?.setattr("writeable", false)?;
         let array = array.into_any().unbind();
         self.grid = Some(array.clone_ref(py));

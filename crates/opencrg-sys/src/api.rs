@@ -778,7 +778,21 @@ fn eval1(
 pub unsafe extern "C" fn crgEvalxy2uv(cpId: c_int, x: f64, y: f64, u: *mut f64, v: *mut f64) -> c_int {
     // SAFETY: the contract above.
     let (u, v) = unsafe { (out(u), out(v)) };
-    eval2("crgEvalxy2uv", cpId, u, v, |cp| cp.xy_to_uv(x, y))
+    if let (Some(u), Some(v)) = (u, v) {
+        // The common case first, as in `crgEvaluv2z`: the owner's way, the lean search.
+        if let Some(Some(found)) = registry::with_owned_cp_mut(cpId, |cp| cp.xy_to_uv_lean(x, y)) {
+            (*u, *v) = found;
+            return 1;
+        }
+        return xy2uv_general(cpId, x, y, u, v);
+    }
+    0
+}
+
+/// `crgEvalxy2uv` for every case but the common one.
+#[inline(never)]
+fn xy2uv_general(cpId: c_int, x: f64, y: f64, u: &mut f64, v: &mut f64) -> c_int {
+    eval2("crgEvalxy2uv", cpId, Some(u), Some(v), |cp| cp.xy_to_uv(x, y))
 }
 
 /// u/v to x/y.
@@ -824,8 +838,26 @@ fn uv2z_general(cpId: c_int, u: f64, v: f64, z: &mut f64) -> c_int {
 #[no_mangle]
 pub unsafe extern "C" fn crgEvalxy2z(cpId: c_int, x: f64, y: f64, z: *mut f64) -> c_int {
     // SAFETY: the contract above.
-    let z = unsafe { out(z) };
-    eval1("crgEvalxy2z", cpId, z, |cp| cp.xy_to_z(x, y))
+    let Some(z) = (unsafe { out(z) }) else { return 0 };
+    // The common case first (see `crgEvalxy2uv`); a search done the lean way whose
+    // elevation needs the general way continues from the (u, v) it found.
+    match registry::with_owned_cp_mut(cpId, |cp| {
+        let (u, v) = cp.xy_to_uv_lean(x, y)?;
+        Some(cp.z_of_found_plain(u, v).ok_or((u, v)))
+    }) {
+        Some(Some(Ok(value))) => {
+            *z = value;
+            1
+        }
+        Some(Some(Err((u, v)))) => eval1("crgEvalxy2z", cpId, Some(z), |cp| cp.z_of_found(u, v)),
+        _ => xy2z_general(cpId, x, y, z),
+    }
+}
+
+/// `crgEvalxy2z` for every case but the common one.
+#[inline(never)]
+fn xy2z_general(cpId: c_int, x: f64, y: f64, z: &mut f64) -> c_int {
+    eval1("crgEvalxy2z", cpId, Some(z), |cp| cp.xy_to_z(x, y))
 }
 
 /// u/v to heading and curvature.
@@ -847,5 +879,12 @@ pub unsafe extern "C" fn crgEvaluv2pk(cpId: c_int, u: f64, v: f64, phi: *mut f64
 pub unsafe extern "C" fn crgEvalxy2pk(cpId: c_int, x: f64, y: f64, phi: *mut f64, curv: *mut f64) -> c_int {
     // SAFETY: the contract above.
     let (phi, curv) = unsafe { (out(phi), out(curv)) };
-    eval2("crgEvalxy2pk", cpId, phi, curv, |cp| cp.xy_to_pk(x, y))
+    let (Some(phi), Some(curv)) = (phi, curv) else { return 0 };
+    // The search the lean way where it applies (see `crgEvalxy2uv`), then heading and
+    // curvature at what it found, inside the guard.
+    let found = registry::with_owned_cp_mut(cpId, |cp| cp.xy_to_uv_lean(x, y)).flatten();
+    eval2("crgEvalxy2pk", cpId, Some(phi), Some(curv), |cp| match found {
+        Some((u, v)) => cp.uv_to_pk(u, v),
+        None => cp.xy_to_pk(x, y),
+    })
 }

@@ -230,11 +230,9 @@ pub unsafe extern "C" fn crgDataSetGetGridZ(dataSetId: c_int, z: *mut f32, nU: c
         }
         // SAFETY: `nU * nV` floats behind `z` (the contract).
         let Some(out) = (unsafe { output(z, g.nu * g.nv) }) else { return 0 };
-        if g.mean == 0.0 {
-            out.copy_from_slice(&g.z);
-        } else {
-            for (o, &value) in out.iter_mut().zip(&g.z) {
-                *o = (f64::from(value) + g.mean) as f32;
+        for (iv, long) in (0..g.nv).map(|iv| (iv, g.long_section(iv))) {
+            for (cross, &value) in out.chunks_exact_mut(g.nv).zip(long) {
+                cross[iv] = if g.mean == 0.0 { value } else { (f64::from(value) + g.mean) as f32 };
             }
         }
         1

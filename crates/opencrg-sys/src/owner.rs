@@ -113,6 +113,15 @@ impl<T> OwnedCell<T> {
         Some(f(unsafe { &*self.value.get() }))
     }
 
+    /// [`OwnedCell::with_owned`] with exclusive access to the value.
+    #[inline(always)]
+    pub(crate) fn with_owned_mut<R>(&self, f: impl FnOnce(&mut T) -> R) -> Option<R> {
+        let _busy = self.enter_as_owner(thread_id())?;
+        // SAFETY: the owner's busy mark is set while ownership stands: no other access
+        // to the value exists until it is cleared.
+        Some(f(unsafe { &mut *self.value.get() }))
+    }
+
     /// Marks the cell busy the owner's way; `None` when this thread is not the owner.
     #[inline]
     fn enter_as_owner(&self, me: usize) -> Option<OwnerMark<'_, T>> {

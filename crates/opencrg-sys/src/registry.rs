@@ -145,6 +145,13 @@ pub fn with_owned_cp<R>(id: c_int, f: impl FnOnce(&ContactPoint) -> R) -> Option
     s.cp.with_owned(|cp| cp.as_ref().map(f)).flatten()
 }
 
+/// [`with_owned_cp`] with the contact point to change (its x/y search history).
+#[inline(always)]
+pub fn with_owned_cp_mut<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R) -> Option<R> {
+    let s = slot(usize::try_from(id).ok()?)?;
+    s.cp.with_owned_mut(|cp| cp.as_mut().map(f)).flatten()
+}
+
 /// Deletes one contact point.
 pub fn delete_cp(id: c_int) -> bool {
     let mut table = lock(&CP_TABLE);

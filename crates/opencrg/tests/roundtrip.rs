@@ -35,7 +35,7 @@ fn binary_formats_are_bit_exact() {
         let road = spec.build().unwrap();
         for format in [DataFormat::Kdbi, DataFormat::Krbi] {
             let back = roundtrip(&road, format, "binary");
-            let (za, zb) = (&road.grid().z, &back.grid().z);
+            let (za, zb) = (road.grid().values(), back.grid().values());
             let first =
                 za.iter().zip(zb.iter()).position(|(x, y)| x.to_bits() != y.to_bits() && !(x.is_nan() && y.is_nan()));
             assert!(
@@ -70,7 +70,7 @@ fn text_formats_keep_their_precision() {
     let road = curved_banked_sloped().build().unwrap();
     for (format, tol) in [(DataFormat::Lrfi, 1e-7f64), (DataFormat::Ldfi, 1e-12)] {
         let back = roundtrip(&road, format, "text");
-        let (a, b) = (&road.grid().z, &back.grid().z);
+        let (a, b) = (road.grid().values(), back.grid().values());
         assert_eq!(a.len(), b.len());
         for (x, y) in a.iter().zip(b) {
             assert!(

@@ -1,4 +1,6 @@
-//! Allocation of the large arrays evaluation reads at random: the elevation grid.
+//! The memory of the large arrays evaluation reads: how the elevation grid is
+//! allocated, and how lookups ask for it ahead of time (the platform differences of
+//! both live here).
 //!
 //! Random queries over a grid of tens of megabytes miss the processor's address
 //! translation cache on nearly every call when the grid sits in 4 KiB pages; in
@@ -7,9 +9,17 @@
 //! first written. Elsewhere nothing changes.
 
 /// An empty vector with room for `capacity` values, its memory advised to use huge pages.
-pub(crate) fn large_vec<T>(capacity: usize) -> Vec<T> {
+fn large_vec<T>(capacity: usize) -> Vec<T> {
     let v: Vec<T> = Vec::with_capacity(capacity);
     advise_huge_pages(v.as_ptr().cast(), v.capacity() * std::mem::size_of::<T>());
+    v
+}
+
+/// `len` zeros in memory advised to use huge pages. Large blocks come from the system
+/// already zeroed and are advised before their first use.
+pub(crate) fn large_zeroed(len: usize) -> Vec<f32> {
+    let v = vec![0.0f32; len];
+    advise_huge_pages(v.as_ptr().cast(), v.len() * std::mem::size_of::<f32>());
     v
 }
 
@@ -34,3 +44,34 @@ fn advise_huge_pages(start: *const u8, len: usize) {
 
 #[cfg(not(target_os = "linux"))]
 fn advise_huge_pages(_start: *const u8, _len: usize) {}
+
+/// Asks the processor to start loading the cache line holding `p` into its caches.
+/// Never faults and reads nothing the program sees, whatever `p` is.
+#[inline(always)]
+pub(crate) fn prefetch<T>(p: *const T) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+        // SAFETY: a prefetch never faults and reads nothing the program sees; the
+        // address is never dereferenced.
+        unsafe { _mm_prefetch(p.cast(), _MM_HINT_T0) };
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = p;
+}
+
+/// `x` truncated to an index for a prefetch: out of range and NaN give some far index
+/// (harmless there), without the work Rust's saturating conversion does.
+#[inline(always)]
+pub(crate) fn rough_index(x: f64) -> usize {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{_mm_cvttsd_si64, _mm_set_sd};
+        // SAFETY: SSE2 is part of every x86_64 target.
+        unsafe { _mm_cvttsd_si64(_mm_set_sd(x)) as usize }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        x as i64 as usize
+    }
+}

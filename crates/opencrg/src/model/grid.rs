@@ -12,15 +12,21 @@ pub enum VLayout {
     Explicit,
 }
 
-/// Elevation grid stored cross section by cross section (`z[iu * nv + iv]`).
+/// Elevation grid: single-precision z values at (cross section `iu`, long section `iv`).
+///
+/// The values are stored long section by long section (`iv * nu + iu`), as the
+/// reference library keeps them: a wheel moving along the road reads neighbouring
+/// values, and a lookup anywhere touches two runs of memory (the two long sections of
+/// its cell), as a cross-section-major layout would. [`Grid::at`],
+/// [`Grid::long_section`], [`Grid::cross_section`] and [`Grid::values`] read them.
 #[derive(Debug, PartialEq)]
 pub struct Grid {
     /// Number of cross sections (u samples).
     pub nu: usize,
     /// Number of long sections (v samples).
     pub nv: usize,
-    /// z values, NaN where the file has none.
-    pub z: Vec<f32>,
+    /// z values, NaN where the file has none, long section by long section.
+    pub(crate) z: Vec<f32>,
     /// Offset added to every z value (changed by scaling and relocation).
     pub mean: f64,
     /// v positions of the long sections, increasing.
@@ -37,6 +43,9 @@ pub struct Grid {
     /// (empty when that range is empty); see [`Grid::v_interval`].
     pub(crate) v_table: Vec<usize>,
 }
+
+/// How far ahead along u (in values) a lookup also asks for the grid: the next cache line.
+const AHEAD: usize = 16;
 
 /// Entries of the v search table (as many as the reference library's).
 const V_TABLE_SIZE: usize = 200;
@@ -61,28 +70,48 @@ impl Clone for Grid {
 
 impl Grid {
     /// Asks the processor to start loading the values of the cell whose first corner
-    /// is (`iu`, `iv`): two rows. The address is only computed, never read.
+    /// is (`iu`, `iv`): a run of each of its two long sections. The address is only
+    /// computed, never read.
     #[inline(always)]
     pub(crate) fn prefetch_cell(&self, iu: usize, iv: usize) {
-        #[cfg(target_arch = "x86_64")]
-        {
-            use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
-            let p = self.z.as_ptr().wrapping_add(iu.wrapping_mul(self.nv).wrapping_add(iv));
-            // SAFETY: a prefetch never faults and reads nothing the program sees; the
-            // address is computed with wrapping arithmetic and never dereferenced.
-            unsafe {
-                _mm_prefetch(p.cast(), _MM_HINT_T0);
-                _mm_prefetch(p.wrapping_add(self.nv).cast(), _MM_HINT_T0);
-            }
-        }
-        #[cfg(not(target_arch = "x86_64"))]
-        let _ = (iu, iv);
+        let p = self.z.as_ptr().wrapping_add(iv.wrapping_mul(self.nu).wrapping_add(iu));
+        crate::memory::prefetch(p);
+        crate::memory::prefetch(p.wrapping_add(self.nu));
     }
 
-    /// The z value at (u index, v index).
+    /// [`Grid::prefetch_cell`], and what a wheel moving along the road reads next: the
+    /// following run of both long sections along u, and the long section beyond the
+    /// cell's nearer side across it (`upper`: the side of `iv + 1`).
+    #[inline(always)]
+    pub(crate) fn prefetch_path(&self, iu: usize, iv: usize, upper: bool) {
+        let p = self.z.as_ptr().wrapping_add(iv.wrapping_mul(self.nu).wrapping_add(iu));
+        crate::memory::prefetch(p);
+        crate::memory::prefetch(p.wrapping_add(self.nu));
+        crate::memory::prefetch(p.wrapping_add(AHEAD));
+        crate::memory::prefetch(p.wrapping_add(self.nu + AHEAD));
+        crate::memory::prefetch(if upper { p.wrapping_add(2 * self.nu) } else { p.wrapping_sub(self.nu) });
+    }
+
+    /// The z value at (u index, v index), without the mean offset.
     #[inline]
     pub fn at(&self, iu: usize, iv: usize) -> f32 {
-        self.z[iu * self.nv + iv]
+        self.z[iv * self.nu + iu]
+    }
+
+    /// The values of long section `iv`, one per cross section.
+    pub fn long_section(&self, iv: usize) -> &[f32] {
+        &self.z[iv * self.nu..(iv + 1) * self.nu]
+    }
+
+    /// The values of cross section `iu`, one per long section, right to left.
+    pub fn cross_section(&self, iu: usize) -> impl ExactSizeIterator<Item = f32> + '_ {
+        assert!(iu < self.nu, "cross section {iu} of {}", self.nu);
+        self.z.iter().skip(iu).step_by(self.nu).copied()
+    }
+
+    /// Every value, long section after long section (`iv * nu + iu`).
+    pub fn values(&self) -> &[f32] {
+        &self.z
     }
 
     /// Index of the v interval for position `v` (0 to `nv - 2`), found as the reference
@@ -178,48 +207,132 @@ impl Grid {
     /// value (or `offset` for [`NanMode::SetZero`]); the first value copied in a
     /// pass gets `offset` added. Then the same from the left border rightwards.
     pub(crate) fn fill_nans(&mut self, mode: NanMode, offset: f64) -> usize {
-        let nv = self.nv;
-        let off = offset as f32;
+        let (nu, nv) = (self.nu, self.nv);
+        if nu == 0 || nv == 0 {
+            return 0;
+        }
+        // Which cross sections hold a NaN, read long section by long section in storage order.
+        let mut with_nan = vec![false; nu];
+        for long in self.z.chunks_exact(nu) {
+            for (flag, z) in with_nan.iter_mut().zip(long) {
+                *flag |= z.is_nan();
+            }
+        }
+        let mut row = vec![0.0f32; nv];
         let mut total = 0;
+        // Carried from one cross section's second pass into the next one's first, as the
+        // reference carries it; a cross section without NaN leaves it false.
         let mut offset_applied = false;
-        for row in self.z.chunks_exact_mut(nv) {
-            let mut found = 0;
-            for v in 1..nv {
-                if row[v].is_nan() {
-                    found += 1;
-                    match mode {
-                        NanMode::SetZero => row[v] = off,
-                        NanMode::KeepLast => {
-                            row[v] = row[v - 1];
-                            if !row[v].is_nan() && !offset_applied {
-                                row[v] += off;
-                                offset_applied = true;
-                            }
-                        }
-                        NanMode::Keep => {}
-                    }
-                }
+        for (iu, _) in with_nan.iter().enumerate().filter(|(_, &nan)| nan) {
+            if iu > 0 && !with_nan[iu - 1] {
+                offset_applied = false;
             }
-            offset_applied = false;
-            for v in (1..nv).rev() {
-                if row[v - 1].is_nan() && !row[v].is_nan() {
-                    found += 1;
-                    match mode {
-                        NanMode::SetZero => row[v - 1] = off,
-                        NanMode::KeepLast => {
-                            row[v - 1] = row[v];
-                            if !offset_applied {
-                                row[v - 1] += off;
-                                offset_applied = true;
-                            }
-                        }
-                        NanMode::Keep => {}
-                    }
-                }
+            for (value, z) in row.iter_mut().zip(self.z.iter().skip(iu).step_by(nu)) {
+                *value = *z;
             }
-            total += found;
+            total += fill_row_nans(&mut row, mode, offset as f32, &mut offset_applied);
+            for (z, value) in self.z.iter_mut().skip(iu).step_by(nu).zip(&row) {
+                *z = *value;
+            }
         }
         total
+    }
+}
+
+/// [`Grid::fill_nans`] on one cross section; returns how many NaNs it found.
+fn fill_row_nans(row: &mut [f32], mode: NanMode, off: f32, offset_applied: &mut bool) -> usize {
+    let nv = row.len();
+    let mut found = 0;
+    for v in 1..nv {
+        if row[v].is_nan() {
+            found += 1;
+            match mode {
+                NanMode::SetZero => row[v] = off,
+                NanMode::KeepLast => {
+                    row[v] = row[v - 1];
+                    if !row[v].is_nan() && !*offset_applied {
+                        row[v] += off;
+                        *offset_applied = true;
+                    }
+                }
+                NanMode::Keep => {}
+            }
+        }
+    }
+    *offset_applied = false;
+    for v in (1..nv).rev() {
+        if row[v - 1].is_nan() && !row[v].is_nan() {
+            found += 1;
+            match mode {
+                NanMode::SetZero => row[v - 1] = off,
+                NanMode::KeepLast => {
+                    row[v - 1] = row[v];
+                    if !*offset_applied {
+                        row[v - 1] += off;
+                        *offset_applied = true;
+                    }
+                }
+                NanMode::Keep => {}
+            }
+        }
+    }
+    found
+}
+
+/// The values of a grid as a file gives them, cross section by cross section, stored
+/// long section by long section as they arrive (see [`Grid`]).
+pub(crate) struct GridValues {
+    z: Vec<f32>,
+    nv: usize,
+    /// Room per long section.
+    stride: usize,
+    /// Cross sections so far.
+    nu: usize,
+}
+
+impl GridValues {
+    /// Room for `capacity` cross sections of `nv` values (more are taken when they come).
+    pub(crate) fn new(nv: usize, capacity: usize) -> Self {
+        let stride = capacity.max(2);
+        GridValues { z: crate::memory::large_zeroed(nv.saturating_mul(stride)), nv, stride, nu: 0 }
+    }
+
+    /// Adds the next cross section (its values right to left; missing ones stay 0).
+    #[inline]
+    pub(crate) fn push(&mut self, values: impl Iterator<Item = f32>) {
+        if self.nu == self.stride {
+            self.grow();
+        }
+        let at = self.nu;
+        for (long, value) in self.z.chunks_exact_mut(self.stride).zip(values) {
+            long[at] = value;
+        }
+        self.nu += 1;
+    }
+
+    #[cold]
+    fn grow(&mut self) {
+        let stride = self.stride.saturating_mul(2);
+        let mut z = crate::memory::large_zeroed(self.nv.saturating_mul(stride));
+        for (new, old) in z.chunks_exact_mut(stride).zip(self.z.chunks_exact(self.stride)) {
+            new[..self.nu].copy_from_slice(&old[..self.nu]);
+        }
+        (self.z, self.stride) = (z, stride);
+    }
+
+    /// The values (`iv * nu + iu`) and the number of cross sections.
+    pub(crate) fn finish(mut self) -> (Vec<f32>, usize) {
+        let (nu, nv) = (self.nu, self.nv);
+        if self.stride != nu {
+            for iv in 1..nv {
+                self.z.copy_within(iv * self.stride..iv * self.stride + nu, iv * nu);
+            }
+            self.z.truncate(nu * nv);
+            if self.z.capacity() > nu * nv + nu * nv / 4 {
+                self.z = crate::memory::large_copy(&self.z);
+            }
+        }
+        (self.z, nu)
     }
 }
 
@@ -247,18 +360,10 @@ impl PrefetchHint {
     /// other memory; nothing is read.
     #[inline(always)]
     pub(crate) fn prefetch(&self, g: &Grid, u_first: f64, u: f64, v: f64) {
-        #[cfg(target_arch = "x86_64")]
-        {
-            use std::arch::x86_64::{_mm_cvttsd_si64, _mm_set_sd};
-            let (eu, ev) = ((u - u_first) * self.inv_u_inc, (v - g.v_first) * self.inv_v_inc);
-            // SAFETY: SSE2 is part of every x86_64 target. The conversions truncate
-            // (out of range gives some far index: harmless, unlike the work Rust's
-            // saturating `as` does, as the prefetch reads nothing).
-            let (iu, iv) = unsafe { (_mm_cvttsd_si64(_mm_set_sd(eu)), _mm_cvttsd_si64(_mm_set_sd(ev))) };
-            g.prefetch_cell(iu as usize, iv as usize);
-        }
-        #[cfg(not(target_arch = "x86_64"))]
-        let _ = (g, u_first, u, v);
+        let (eu, ev) = ((u - u_first) * self.inv_u_inc, (v - g.v_first) * self.inv_v_inc);
+        // The upper half of a cell is where twice the estimate truncates to an odd number.
+        let upper = crate::memory::rough_index(2.0 * ev) & 1 == 1;
+        g.prefetch_path(crate::memory::rough_index(eu), crate::memory::rough_index(ev), upper);
     }
 }
 
@@ -266,8 +371,14 @@ impl PrefetchHint {
 mod tests {
     use super::*;
 
-    fn grid(z: Vec<f32>, nv: usize) -> Grid {
-        let nu = z.len() / nv;
+    /// A grid of the given cross sections.
+    fn grid(rows: Vec<f32>, nv: usize) -> Grid {
+        let nu = rows.len() / nv;
+        let mut values = GridValues::new(nv, 1);
+        for row in rows.chunks_exact(nv) {
+            values.push(row.iter().copied());
+        }
+        let (z, _) = values.finish();
         Grid {
             nu,
             nv,
@@ -287,10 +398,52 @@ mod tests {
         let n = f32::NAN;
         let mut g = grid(vec![n, n, 1.0, 2.0, n], 5);
         assert_eq!(g.fill_nans(NanMode::KeepLast, 0.0), 4, "both passes count");
-        assert_eq!(g.z, vec![1.0, 1.0, 1.0, 2.0, 2.0]);
+        assert_eq!(g.cross_section(0).collect::<Vec<_>>(), vec![1.0, 1.0, 1.0, 2.0, 2.0]);
         let mut g = grid(vec![n, 1.0, n], 3);
         g.fill_nans(NanMode::SetZero, 5.0);
-        assert_eq!(g.z, vec![5.0, 1.0, 5.0]);
+        assert_eq!(g.cross_section(0).collect::<Vec<_>>(), vec![5.0, 1.0, 5.0]);
+    }
+
+    /// The offset goes to the first value copied, and that mark carries from one cross
+    /// section's second pass into the next one's first, but not across a cross section
+    /// without NaN: the same as filling every cross section in turn.
+    #[test]
+    fn nan_offsets_carry_as_in_a_plain_pass_over_every_cross_section() {
+        let n = f32::NAN;
+        let rows = vec![
+            n, 1.0, 2.0, n, // both passes copy, the mark stays set
+            n, 3.0, n, 4.0, // first pass copies with the mark still set
+            5.0, 6.0, 7.0, 8.0, // no NaN: clears the mark
+            9.0, n, 10.0, 11.0, //
+            n, n, n, n, // nothing to copy
+        ];
+        for mode in [NanMode::KeepLast, NanMode::SetZero, NanMode::Keep] {
+            let mut g = grid(rows.clone(), 4);
+            let found = g.fill_nans(mode, 0.5);
+            let (mut expected, mut mark, mut count) = (rows.clone(), false, 0);
+            for row in expected.chunks_exact_mut(4) {
+                count += fill_row_nans(row, mode, 0.5, &mut mark);
+            }
+            assert_eq!(found, count, "{mode:?}");
+            let got: Vec<f32> = (0..g.nu).flat_map(|iu| g.cross_section(iu).collect::<Vec<_>>()).collect();
+            assert_eq!(format!("{got:?}"), format!("{expected:?}"), "{mode:?}");
+        }
+    }
+
+    /// Cross sections pushed beyond the first guess of their number, and fewer than it,
+    /// land in long-section order.
+    #[test]
+    fn values_are_stored_long_section_by_long_section() {
+        for capacity in [1, 3, 7, 100] {
+            let mut values = GridValues::new(3, capacity);
+            for iu in 0..7 {
+                values.push((0..3).map(|iv| (10 * iu + iv) as f32));
+            }
+            let (z, nu) = values.finish();
+            assert_eq!(nu, 7);
+            let expected: Vec<f32> = (0..3).flat_map(|iv| (0..7).map(move |iu| (10 * iu + iv) as f32)).collect();
+            assert_eq!(z, expected, "capacity {capacity}");
+        }
     }
 
     #[test]

@@ -148,6 +148,8 @@ pub struct RefLine {
     pub(crate) normals: Vec<[f64; 4]>,
     /// Per segment: its length (what the x/y search divides by to get v).
     pub(crate) seg_len: Vec<f64>,
+    /// Per cross section: the point and its direction, as the x/y search reads them.
+    pub(crate) search: Vec<SearchPoint>,
     /// Per cross section: the reference line curvature over 0.5 m (see [`RefLine::curvature_step`]).
     pub(crate) curvature: Vec<f64>,
     /// [`RefLine::curvature_step`] as of the last cache update.
@@ -373,6 +375,12 @@ impl RefLine {
                 (dx * dx + dy * dy).sqrt()
             })
             .collect();
+        self.search = (0..n)
+            .map(|i| {
+                let (before, after) = (i.saturating_sub(1), (i + 1).min(n - 1));
+                SearchPoint { x: xs[i], y: ys[i], dx: xs[after] - xs[before], dy: ys[after] - ys[before] }
+            })
+            .collect();
         let k = self.curvature_step();
         self.curv_step = k;
         self.curvature = (0..n).map(|i| if i >= k && i + k < n { self.curvature_at(i, k) } else { 0.0 }).collect();
@@ -387,6 +395,27 @@ impl RefLine {
         let dy0 = self.y[i] - self.y[i - k];
         let dy1 = self.y[i + k] - self.y[i];
         (dx0 * dy1 - dy0 * dx1) * hd
+    }
+}
+
+/// A reference line point as the x/y search reads it, in one record: the point, and the
+/// direction from the point before it to the point after it (at the ends, from or to the
+/// end point itself).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+#[repr(C, align(32))]
+pub(crate) struct SearchPoint {
+    pub x: f64,
+    pub y: f64,
+    pub dx: f64,
+    pub dy: f64,
+}
+
+impl SearchPoint {
+    /// How far (x, y) lies ahead of the point along its direction (scaled by the
+    /// direction's length): `(x - px) dx + (y - py) dy`.
+    #[inline(always)]
+    pub(crate) fn ahead(&self, x: f64, y: f64) -> f64 {
+        (x - self.x) * self.dx + (y - self.y) * self.dy
     }
 }
 

@@ -98,19 +98,17 @@ fn finite_range(values: &[f32]) -> (f32, f32) {
 impl Statistics {
     /// The figures of a reference line and grid as they are now.
     pub(crate) fn of(l: &RefLine, g: &Grid) -> Statistics {
-        let mean_of = |row: &[f32]| {
-            let (sum, n) =
-                row.iter().filter(|z| !z.is_nan()).fold((0.0, 0usize), |(s, n), &z| (s + f64::from(z), n + 1));
+        let mean_of = |row: &mut dyn Iterator<Item = f32>| {
+            let (sum, n) = row.filter(|z| !z.is_nan()).fold((0.0, 0usize), |(s, n), z| (s + f64::from(z), n + 1));
             if n > 0 {
                 sum / n as f64
             } else {
                 0.0
             }
         };
-        let nv = g.nv;
-        let z_mean_start = mean_of(&g.z[..nv]);
-        let z_mean_end = mean_of(&g.z[(g.nu - 1) * nv..g.nu * nv]);
-        let (lo, hi) = finite_range(&g.z);
+        let z_mean_start = mean_of(&mut g.cross_section(0));
+        let z_mean_end = mean_of(&mut g.cross_section(g.nu - 1));
+        let (lo, hi) = finite_range(g.values());
         let z_min = z_mean_start.min(f64::from(lo));
         let z_max = z_mean_start.max(f64::from(hi));
         let n = l.n;

@@ -194,6 +194,33 @@ impl ContactPoint {
         eval::uv_to_z_plain(&self.road, &self.eval, u, v)
     }
 
+    /// The C library's call-free path of the x/y calls: (u, v) of (x, y) when the lean
+    /// search applies (an earlier query lies within reach and the walk is short), with the history updated as
+    /// [`ContactPoint::xy_to_uv`] updates it; `None`, with nothing changed, otherwise
+    /// (then `xy_to_uv` answers). Never panics; not part of the supported Rust API.
+    #[doc(hidden)]
+    #[inline(always)]
+    pub fn xy_to_uv_lean(&mut self, x: f64, y: f64) -> Option<(f64, f64)> {
+        if x.is_nan() || y.is_nan() {
+            return None;
+        }
+        let road = &*self.road;
+        search::xy_to_uv_lean(&road.line, self.eval.closed_search, &mut self.history, x, y)
+    }
+
+    /// The C library's call-free path of `crgEvalxy2z` after a search: the elevation
+    /// [`ContactPoint::xy_to_z`] gives at the (u, v) its search found, for the common
+    /// case (see [`ContactPoint::uv_to_z_plain`]); `None` for every other case, where
+    /// [`ContactPoint::z_of_found`] answers. Also asks for the grid a wheel moving on
+    /// will read next. Never panics; not part of the supported Rust API.
+    #[doc(hidden)]
+    #[inline(always)]
+    pub fn z_of_found_plain(&self, u: f64, v: f64) -> Option<f64> {
+        let cell = PlainCell::of(&self.road, &self.eval, u, v)?;
+        cell.prefetch_path(&self.road);
+        cell.elevation(&self.road)
+    }
+
     /// Heading and curvature at (u, v).
     #[inline]
     pub fn uv_to_pk(&self, u: f64, v: f64) -> Result<(f64, f64)> {
@@ -206,6 +233,9 @@ impl ContactPoint {
     pub fn xy_to_uv(&mut self, x: f64, y: f64) -> Result<(f64, f64)> {
         finite(x, y)?;
         let road = &*self.road;
+        if let Some(found) = search::xy_to_uv_lean(&road.line, self.eval.closed_search, &mut self.history, x, y) {
+            return Ok(found);
+        }
         Ok(search::xy_to_uv(&road.line, &road.index, self.eval.closed_search, &mut self.history, x, y))
     }
 
@@ -230,13 +260,18 @@ impl ContactPoint {
     #[inline]
     pub fn xy_to_z(&mut self, x: f64, y: f64) -> Result<f64> {
         let (u, v) = self.xy_to_uv(x, y)?;
-        // Not `uv_to_z`: its prefetch would come too late to help here.
-        self.z_of_found(u, v)
+        match self.z_of_found_plain(u, v) {
+            Some(z) => Ok(z),
+            None => self.z_of_found(u, v),
+        }
     }
 
-    /// The elevation [`ContactPoint::xy_to_z`] gives at the (u, v) its search found.
+    /// The elevation [`ContactPoint::xy_to_z`] gives at the (u, v) its search found (no
+    /// check of u and v: the search's answer is taken as it is). Not part of the
+    /// supported Rust API.
+    #[doc(hidden)]
     #[inline]
-    pub(crate) fn z_of_found(&self, u: f64, v: f64) -> Result<f64> {
+    pub fn z_of_found(&self, u: f64, v: f64) -> Result<f64> {
         elevation(eval::uv_to_z(&self.road, &self.eval, u, v))
     }
 

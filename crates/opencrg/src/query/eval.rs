@@ -30,6 +30,8 @@ pub(crate) struct EvalOptions {
     offset_v: f64,
     smooth_begin: Option<f64>,
     smooth_end: Option<f64>,
+    /// Neither smoothing zone is set.
+    no_smoothing: bool,
     curv_lateral: bool,
     close_track: bool,
     /// The reference library's x/y search tests option id 1 (the u border mode) for
@@ -46,6 +48,7 @@ impl From<&Settings> for EvalOptions {
             offset_v: o.get_double(opt::BORDER_OFFSET_V).unwrap_or(0.0),
             smooth_begin: o.get_double(opt::SMOOTH_U_BEGIN),
             smooth_end: o.get_double(opt::SMOOTH_U_END),
+            no_smoothing: o.get_double(opt::SMOOTH_U_BEGIN).is_none() && o.get_double(opt::SMOOTH_U_END).is_none(),
             curv_lateral: o.has_int(opt::CURV_MODE, 0),
             close_track: o.has_int(opt::REFLINE_CONTINUE, 1),
             closed_search: o.has_int(opt::BORDER_MODE_U, 1),
@@ -267,11 +270,11 @@ fn surface(
     let (l, g) = (&road.line, &road.grid);
     let mut z = 0.0;
     if with_values {
-        // The four corners: (iu, iv), (iu, iv + 1), and the same one row further.
-        let (base, next) = (iu.wrapping_mul(g.nv).wrapping_add(iv), g.nv);
-        let row = g.z.get(base..)?;
-        let &[c00, c01] = row.first_chunk::<2>()?;
-        let &[c10, c11] = row.get(next..)?.first_chunk::<2>()?;
+        // The four corners: (iu, iv), (iu + 1, iv), and the same on the next long section.
+        let (base, next) = (iv.wrapping_mul(g.nu).wrapping_add(iu), g.nu);
+        let long = g.z.get(base..)?;
+        let &[c00, c10] = long.first_chunk::<2>()?;
+        let &[c01, c11] = long.get(next..)?.first_chunk::<2>()?;
         let z00 = f64::from(c00);
         let z10 = f64::from(c10) - z00;
         let mut z01 = f64::from(c01);
@@ -314,12 +317,7 @@ fn explicit_v(g: &crate::grid::Grid, pos: f64) -> (usize, f64) {
 #[inline(always)]
 fn plain_inside(road: &Road, options: &EvalOptions, u: f64, v: f64) -> bool {
     let (l, g) = (&road.line, &road.grid);
-    options.smooth_begin.is_none()
-        && options.smooth_end.is_none()
-        && u >= l.u_first
-        && u <= l.u_last
-        && v >= g.v_first
-        && v <= g.v_last
+    options.no_smoothing && u >= l.u_first && u <= l.u_last && v >= g.v_first && v <= g.v_last
 }
 
 /// The u interval index and fraction of a u inside the data.
@@ -365,6 +363,13 @@ impl PlainCell {
     #[inline(always)]
     pub(crate) fn prefetch(&self, road: &Road) {
         road.grid.prefetch_cell(self.iu, self.iv);
+    }
+
+    /// [`PlainCell::prefetch`], and the grid a wheel moving on from here reads next
+    /// (see `Grid::prefetch_path`).
+    #[inline(always)]
+    pub(crate) fn prefetch_path(&self, road: &Road) {
+        road.grid.prefetch_path(self.iu, self.iv, self.fv > 0.5);
     }
 
     /// The elevation of the surface at the point.

@@ -19,7 +19,7 @@ pub(crate) fn uv_gradient(road: &Road, options: &EvalOptions, u: f64, v: f64) ->
     let (iu, fu, iv, fv) = (ua.index, ua.frac, va.index, va.frac);
     let (mut zu, mut zv) = (0.0, 0.0);
     if ua.with_values && va.with_values {
-        let at = |i: usize, j: usize| f64::from(g.z[i * g.nv + j]);
+        let at = |i: usize, j: usize| f64::from(g.at(i, j));
         let (z00, z01, z10, z11) = (at(iu, iv), at(iu, iv + 1), at(iu + 1, iv), at(iu + 1, iv + 1));
         // d/dfu and d/dfv of z00 (1-fu)(1-fv) + z10 fu (1-fv) + z01 (1-fu) fv + z11 fu fv.
         zu += ((z10 - z00) * (1.0 - fv) + (z11 - z01) * fv) * ua.dfrac;

@@ -7,13 +7,13 @@
 //! a scan, and gives exactly the sample a linear scan would (ties go to the lowest
 //! index).
 
-use crate::refline::RefLine;
+use crate::refline::{RefLine, SearchPoint};
 use crate::sample_index::SampleIndex;
 
 /// Default number of history entries of a contact point.
 pub(crate) const DEFAULT_HISTORY: usize = 50;
 
-#[derive(Debug, Clone, Copy, Default)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
 struct Entry {
     x: f64,
     y: f64,
@@ -21,13 +21,17 @@ struct Entry {
 }
 
 /// The recent results of a contact point, newest first, used to start the search.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub(crate) struct History {
     ring: Vec<Entry>,
     head: usize,
     used: usize,
     close2: f64,
     far2: f64,
+    /// The squared distance under which an entry is a hit: `d2 < close2 || d2 < far2`
+    /// is `d2 < max(close2, far2)`, NaN included (a NaN bound never holds, and `max`
+    /// ignores a NaN).
+    reach2: f64,
 }
 
 /// The index of the first entry closer than `limit` (squared) to (x, y). Entries are
@@ -51,7 +55,7 @@ fn first_within(entries: &[Entry], x: f64, y: f64, limit: f64) -> Option<usize> 
 impl History {
     /// A history of `size` entries with squared close and far distances.
     pub(crate) fn new(size: usize, close2: f64, far2: f64) -> Self {
-        History { ring: vec![Entry::default(); size], head: 0, used: 0, close2, far2 }
+        History { ring: vec![Entry::default(); size], head: 0, used: 0, close2, far2, reach2: close2.max(far2) }
     }
 
     /// Empties the history and gives it `size` entries.
@@ -64,16 +68,17 @@ impl History {
     /// Sets the distance under which an entry is a close hit.
     pub(crate) fn set_close(&mut self, distance: f64) {
         self.close2 = distance * distance;
+        self.reach2 = self.close2.max(self.far2);
     }
 
     /// Sets the distance under which an entry is a far hit.
     pub(crate) fn set_far(&mut self, distance: f64) {
         self.far2 = distance * distance;
+        self.reach2 = self.close2.max(self.far2);
     }
 
-    /// Entry `j` (0 is the newest). `j` is below the length, so one conditional
-    /// subtraction replaces a division in this hot path.
-    #[inline]
+    /// Entry `j` (0 is the newest), `j` below the length.
+    #[cfg(test)]
     fn get(&self, j: usize) -> &Entry {
         let mut k = self.head + j;
         if k >= self.ring.len() {
@@ -85,7 +90,15 @@ impl History {
     #[inline]
     fn push_front(&mut self, e: Entry) {
         self.head = if self.head == 0 { self.ring.len() - 1 } else { self.head - 1 };
-        self.ring[self.head] = e;
+        self.set_newest(e);
+    }
+
+    /// Overwrites the newest entry (never panics: the head always lies in the ring).
+    #[inline]
+    fn set_newest(&mut self, e: Entry) {
+        if let Some(slot) = self.ring.get_mut(self.head) {
+            *slot = e;
+        }
     }
 
     /// Starts the history afresh with the reference line point at `u`.
@@ -100,33 +113,197 @@ impl History {
         self.used = 1;
     }
 
+    /// The newest entry's index when it is within reach of (x, y); `None` otherwise.
+    /// The newest entry is the contact point's previous query: along a path, the hit.
+    #[inline(always)]
+    fn newest_within(&self, x: f64, y: f64) -> Option<usize> {
+        let newest = self.ring.get(self.head).filter(|_| self.used > 0)?;
+        let (dx, dy) = (x - newest.x, y - newest.y);
+        (dx * dx + dy * dy < self.reach2).then_some(newest.index)
+    }
+
     /// The index to start from: the newest entry within the close or the far distance.
+    /// Never panics.
+    #[inline(always)]
     fn lookup(&self, x: f64, y: f64) -> Option<usize> {
-        // `d2 < close2 || d2 < far2` is `d2 < max(close2, far2)`, NaN included (a NaN
-        // bound never holds, and `max` ignores a NaN).
-        let limit = self.close2.max(self.far2);
-        // Newest first: from the head to the end of the ring, then from its start.
+        if self.used == 0 {
+            return None;
+        }
+        self.newest_within(x, y).or_else(|| self.lookup_older(x, y, self.reach2))
+    }
+
+    /// [`History::lookup`] among the entries after the newest, newest first: from the
+    /// head to the end of the ring, then from its start.
+    fn lookup_older(&self, x: f64, y: f64, limit: f64) -> Option<usize> {
         let first = self.ring.len().min(self.head + self.used);
-        let (newer, older) = (&self.ring[self.head..first], &self.ring[..self.used - (first - self.head)]);
+        let newer = self.ring.get(self.head + 1..first).unwrap_or_default();
+        let older = self.ring.get(..self.used - (first - self.head)).unwrap_or_default();
         first_within(newer, x, y, limit).or_else(|| first_within(older, x, y, limit))
     }
 
+    /// Records a result: a new newest entry, unless the newest one has the same index
+    /// (then it is overwritten). Never panics.
+    #[inline]
     fn record(&mut self, x: f64, y: f64, index: usize) {
         if self.ring.len() < 2 {
             return;
         }
-        if self.get(0).index != index {
+        if self.ring.get(self.head).map(|e| e.index) != Some(index) {
             self.push_front(Entry::default());
             if self.used < self.ring.len() {
                 self.used += 1;
             }
         }
-        self.ring[self.head] = Entry { x, y, index };
+        self.set_newest(Entry { x, y, index });
     }
 }
 
-/// Finds (u, v) of the point (x, y), starting from the history and recording the
-/// result in it; `closed_search` continues the walk around a closed track.
+/// Steps the lean search walks at most before it leaves the point to the general one.
+const LEAN_STEPS: usize = 32;
+
+/// Walks from point `k` to the segment `k - 1`..`k` whose normals enclose (x, y):
+/// forward while the point lies ahead of point `k`, then backward while it lies behind
+/// point `k - 1` (around a closed track, past its ends once). Returns `k` and how far
+/// the point lies ahead of point `k - 1` (see [`SearchPoint::ahead`]).
+///
+/// `LEAN` gives up (`None`) where the general walk would go around a closed track's end
+/// or take more than [`LEAN_STEPS`] steps; otherwise both take the same steps. `pts`
+/// holds at least two points and `1 <= k < pts.len()`; the walk never panics.
+#[inline(always)]
+fn walk<const LEAN: bool>(pts: &[SearchPoint], closed: bool, mut k: usize, x: f64, y: f64) -> Option<(usize, f64)> {
+    let n = pts.len();
+    let ahead = |i: usize| pts.get(i).map(|p| p.ahead(x, y));
+    let walk_limit = if LEAN { LEAN_STEPS } else { 2 * n + 4 };
+    let mut turn = 0.0;
+    let mut steps = 0;
+    loop {
+        if !(ahead(k)? > 0.0) {
+            break;
+        }
+        steps += 1;
+        if steps > walk_limit {
+            if LEAN {
+                return None;
+            }
+            break;
+        }
+        if k < n - 1 {
+            k += 1;
+        } else if closed {
+            if LEAN {
+                return None;
+            }
+            turn = ahead(0)?;
+            if turn <= 0.0 {
+                break;
+            }
+            k = 1;
+        } else {
+            break;
+        }
+    }
+    let mut steps = 0;
+    loop {
+        let behind = ahead(k - 1)?;
+        steps += 1;
+        if !(behind < 0.0) || steps > walk_limit {
+            if LEAN && behind < 0.0 {
+                return None;
+            }
+            return Some((k, behind));
+        }
+        if k > 1 {
+            k -= 1;
+        } else if closed {
+            if LEAN {
+                return None;
+            }
+            if turn != 0.0 {
+                return Some((k, behind));
+            }
+            turn = ahead(n - 1)?;
+            if turn >= 0.0 {
+                return Some((k, behind));
+            }
+            k = n - 1;
+        } else {
+            return Some((k, behind));
+        }
+    }
+}
+
+/// (u, v) of (x, y) found on segment `k - 1`..`k` with `behind` (see [`walk`]): v along
+/// the segment's normal, u interpolated between the normals of its two points; then
+/// measured from an end point where u lies before the start or beyond the end. `None`
+/// only for a `k` outside the line.
+#[inline(always)]
+fn solve(line: &RefLine, closed_search: bool, k: usize, behind: f64, x: f64, y: f64) -> Option<(f64, f64)> {
+    let (a, b) = (line.search.get(k - 1)?, line.search.get(k)?);
+    let (x2x1, y2y1) = (b.x - a.x, b.y - a.y);
+    let (xxx1, yyy1) = (x - a.x, y - a.y);
+    let v = (x2x1 * yyy1 - y2y1 * xxx1) / line.seg_len.get(k - 1)?;
+    let ta = behind / (a.dx * x2x1 + a.dy * y2y1);
+    let tb = (b.dx * (b.x - x) + b.dy * (b.y - y)) / (b.dx * x2x1 + b.dy * y2y1);
+    let du = ta / (ta + tb) * line.u_inc;
+    let u = (k - 1) as i64 as f64 * line.u_inc + du + line.u_first;
+    Some(beyond_ends(line, closed_search, x, y, u, v))
+}
+
+/// (u, v) of a point found before the start or beyond the end of the line (or beyond
+/// the closed-track range): measured from the end point along its heading.
+#[inline(always)]
+fn beyond_ends(line: &RefLine, closed_search: bool, x: f64, y: f64, u: f64, v: f64) -> (f64, f64) {
+    let t = &line.trig;
+    let from_start = || {
+        let (dx, dy) = (x - line.x_first, y - line.y_first);
+        (line.u_first + dx * t.first_cos + dy * t.first_sin, dy * t.first_cos - dx * t.first_sin)
+    };
+    let from_end = || {
+        let (dx, dy) = (x - line.x_last, y - line.y_last);
+        (line.u_last + dx * t.last_cos + dy * t.last_sin, dy * t.last_cos - dx * t.last_sin)
+    };
+    match line.closed {
+        Some((low, high)) if closed_search => {
+            if u > high {
+                return from_start();
+            } else if u < low {
+                return from_end();
+            }
+        }
+        _ => {
+            if u < line.u_first {
+                return from_start();
+            } else if u > line.u_last {
+                return from_end();
+            }
+        }
+    }
+    (u, v)
+}
+
+/// [`xy_to_uv`] for the common case of a point near an earlier one: a history entry is
+/// within reach and the walk is short and does not go around a closed track's end. The same answer and the same history change as
+/// [`xy_to_uv`] then; `None`, with nothing changed, otherwise. Never panics.
+#[inline(always)]
+pub(crate) fn xy_to_uv_lean(
+    line: &RefLine,
+    closed_search: bool,
+    history: &mut History,
+    x: f64,
+    y: f64,
+) -> Option<(f64, f64)> {
+    let n = line.n;
+    let pts = line.search.get(..n)?;
+    let start = history.lookup(x, y)?.min(n - 1).max(1);
+    let (k, behind) = walk::<true>(pts, line.closed.is_some(), start, x, y)?;
+    let found = solve(line, closed_search, k, behind, x, y)?;
+    history.record(x, y, (k + 1).min(n - 1));
+    Some(found)
+}
+
+/// Finds (u, v) of the point (x, y), starting from the history (or, without a hit
+/// there, from the nearest reference line sample) and recording the result in it;
+/// `closed_search` continues the walk around a closed track.
 pub(crate) fn xy_to_uv(
     line: &RefLine,
     index: &SampleIndex,
@@ -136,113 +313,21 @@ pub(crate) fn xy_to_uv(
     y: f64,
 ) -> (f64, f64) {
     let n = line.n;
-    // Slices of exactly n points: with k kept in 1..n, the indexing below needs no
-    // further bounds checks.
-    let (xs, ys) = (&line.x[..n], &line.y[..n]);
-    let closed = &line.closed;
     let start = match history.lookup(x, y) {
         Some(i) => i.min(n - 1),
         None => index.nearest(line, x, y),
     };
-    let mut k = start.max(1);
-    let walk_limit = 2 * n + 4;
-
-    // Walk forward while the point lies ahead of point k.
-    let mut turn = 0.0;
-    for _ in 0..walk_limit {
-        let p1 = (k + 1).min(n - 1);
-        let ahead = (x - xs[k]) * (xs[p1] - xs[k - 1]) + (y - ys[k]) * (ys[p1] - ys[k - 1]);
-        if !(ahead > 0.0) {
-            break;
+    let pts = &line.search[..n];
+    let found = walk::<false>(pts, line.closed.is_some(), start.max(1), x, y)
+        .and_then(|(k, behind)| Some((k, solve(line, closed_search, k, behind, x, y)?)));
+    match found {
+        Some((k, found)) => {
+            history.record(x, y, (k + 1).min(n - 1));
+            found
         }
-        if k < n - 1 {
-            k += 1;
-        } else if closed.is_some() {
-            turn = (x - xs[0]) * (xs[1] - xs[0]) + (y - ys[0]) * (ys[1] - ys[0]);
-            if turn <= 0.0 {
-                break;
-            }
-            k = 1;
-        } else {
-            break;
-        }
+        // Unreachable: the line has its n >= 2 points, and the walk keeps 1 <= k < n.
+        None => (f64::NAN, f64::NAN),
     }
-
-    // Walk backward while the point lies behind point k - 1.
-    let (mut x0, mut x1, mut x2, mut y0, mut y1, mut y2);
-    let mut behind;
-    let mut steps = 0;
-    loop {
-        let m2 = k.saturating_sub(2);
-        x0 = xs[m2];
-        x1 = xs[k - 1];
-        x2 = xs[k];
-        y0 = ys[m2];
-        y1 = ys[k - 1];
-        y2 = ys[k];
-        behind = (x - x1) * (x2 - x0) + (y - y1) * (y2 - y0);
-        steps += 1;
-        if !(behind < 0.0) || steps > walk_limit {
-            break;
-        }
-        if k > 1 {
-            k -= 1;
-        } else if closed.is_some() {
-            if turn != 0.0 {
-                break;
-            }
-            let last = n - 1;
-            turn = (x - xs[last]) * (xs[last] - xs[last - 1]) + (y - ys[last]) * (ys[last] - ys[last - 1]);
-            if turn >= 0.0 {
-                break;
-            }
-            k = last;
-        } else {
-            break;
-        }
-    }
-
-    let (x2x1, y2y1) = (x2 - x1, y2 - y1);
-    let (xxx1, yyy1) = (x - x1, y - y1);
-    let mut v = (x2x1 * yyy1 - y2y1 * xxx1) / line.seg_len[k - 1];
-    let p1 = (k + 1).min(n - 1);
-    let (x3x1, y3y1) = (xs[p1] - x1, ys[p1] - y1);
-    let (x2x0, y2y0) = (x2 - x0, y2 - y0);
-    let ta = behind / (x2x0 * x2x1 + y2y0 * y2y1);
-    let tb = (x3x1 * (x2 - x) + y3y1 * (y2 - y)) / (x3x1 * x2x1 + y3y1 * y2y1);
-    let du = ta / (ta + tb) * line.u_inc;
-    let mut u = (k - 1) as i64 as f64 * line.u_inc + du + line.u_first;
-
-    let t = &line.trig;
-    let from_start = |u: &mut f64, v: &mut f64| {
-        let (dx, dy) = (x - line.x_first, y - line.y_first);
-        *u = line.u_first + dx * t.first_cos + dy * t.first_sin;
-        *v = dy * t.first_cos - dx * t.first_sin;
-    };
-    let from_end = |u: &mut f64, v: &mut f64| {
-        let (dx, dy) = (x - line.x_last, y - line.y_last);
-        *u = line.u_last + dx * t.last_cos + dy * t.last_sin;
-        *v = dy * t.last_cos - dx * t.last_sin;
-    };
-    match closed {
-        Some((cmin, cmax)) if closed_search => {
-            let (cmin, cmax) = (*cmin, *cmax);
-            if u > cmax {
-                from_start(&mut u, &mut v);
-            } else if u < cmin {
-                from_end(&mut u, &mut v);
-            }
-        }
-        _ => {
-            if u < line.u_first {
-                from_start(&mut u, &mut v);
-            } else if u > line.u_last {
-                from_end(&mut u, &mut v);
-            }
-        }
-    }
-    history.record(x, y, p1);
-    (u, v)
 }
 
 #[cfg(test)]
@@ -269,6 +354,63 @@ mod tests {
                 h.record(x, y, step);
             }
         }
+    }
+
+    /// The lean search either gives the general search's answer and history change, bit
+    /// for bit, or declines and changes nothing: on an open winding line, a closed
+    /// circle (with and without the closed-track search) and lines of a few points,
+    /// along paths forwards and backwards, with jumps, off the road and beyond its ends.
+    #[test]
+    fn lean_search_answers_as_the_general_search() {
+        use crate::synth::RoadSpec;
+        let circle = 2.0 * std::f64::consts::PI * 20.0;
+        let roads = [
+            RoadSpec::straight(300.0, 4.0, 0.25, 1.0).with_heading(|u| 2.0 * (u / 40.0).sin()),
+            RoadSpec::straight(circle - 0.5, 4.0, 0.1, 1.0).with_heading(|u| u / 20.0),
+            RoadSpec::straight(0.5, 4.0, 0.25, 1.0).with_heading(|u| u),
+            RoadSpec::straight(0.75, 4.0, 0.25, 1.0),
+        ];
+        let mut seed = 7u64;
+        let mut random = move || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut lean_answers, mut closed_tested) = (0, false);
+        for spec in roads {
+            let road = spec.build().unwrap();
+            let line = &road.line;
+            closed_tested |= line.closed.is_some();
+            let (length, xs, ys) = (line.u_last - line.u_first, &line.x, &line.y);
+            for closed_search in [false, true] {
+                for size in [50, 3, 0] {
+                    let mut history = History::new(size, 0.09, 4.84);
+                    let mut k = 0.0;
+                    for step in 0..3000 {
+                        // Mostly small steps along the line, now and then a jump or a point
+                        // far off it; u reaching past both ends.
+                        k = if step % 400 == 0 { random() } else { k + (random() - 0.3) * 0.01 };
+                        let i = ((k.rem_euclid(1.0)) * (line.n - 1) as f64) as usize;
+                        let off = if step % 97 == 0 { 50.0 * (random() - 0.5) } else { 3.0 * (random() - 0.5) };
+                        let along = if step % 131 == 0 { 1.2 * length * (random() - 0.1) } else { 0.0 };
+                        let (x, y) = (xs[i] + off + along, ys[i] - off * 0.5);
+                        let mut general = history.clone();
+                        let expected = xy_to_uv(line, &road.index, closed_search, &mut general, x, y);
+                        let mut lean = history.clone();
+                        match xy_to_uv_lean(line, closed_search, &mut lean, x, y) {
+                            Some((u, v)) => {
+                                lean_answers += 1;
+                                assert_eq!((u.to_bits(), v.to_bits()), (expected.0.to_bits(), expected.1.to_bits()));
+                                assert_eq!(lean, general, "history after step {step}");
+                            }
+                            None => assert_eq!(lean, history, "a declined search changed the history"),
+                        }
+                        history = general;
+                    }
+                }
+            }
+        }
+        assert!(closed_tested, "the circle can be closed");
+        assert!(lean_answers > 20_000, "the lean search answered {lean_answers} times");
     }
 
     #[test]

@@ -2,7 +2,7 @@
 //! header, the records of the data section, the reference line from its channels.
 
 use crate::error::{Error, Location, Result};
-use crate::grid::{Grid, VLayout};
+use crate::grid::{Grid, GridValues, VLayout};
 use crate::header::{Channel, Header, RoadParams};
 use crate::reader::{self, DataSource};
 use crate::records::{self, Truncated};
@@ -196,7 +196,7 @@ fn u_axis(p: &RoadParams, err: &impl Fn(&str, String) -> Error) -> Result<(f64, 
     Ok((u_first, u_inc))
 }
 
-/// Decodes the records: the grid (cross section by cross section), the reference line
+/// Decodes the records: the grid (see [`GridValues`]), the reference line
 /// channels, and the number of cross sections.
 fn read_records(
     header: &Header,
@@ -231,14 +231,14 @@ fn read_records(
     if estimate.saturating_mul(nv) > MAX_CELLS {
         return Err(err("data section", format!("{estimate} x {nv} cells exceed the supported size")));
     }
-    let mut z: Vec<f32> = crate::memory::large_vec(estimate.saturating_mul(nv));
+    let mut z = GridValues::new(nv, estimate);
     let mut b = Builder::new(cols, estimate);
     // Decoded pages of a mapped file are handed back as decoding advances, so the
     // file and the grid are never both resident.
     const RELEASE_STEP: usize = 8 << 20;
     let mut released = 0;
     let decoded = records::decode(format, nch, bytes, max_records, |i, rec, end| {
-        z.extend(sections.columns.iter().map(|&c| rec[c] as f32));
+        z.push(sections.columns.iter().map(|&c| rec[c] as f32));
         if end - released >= RELEASE_STEP {
             data.bytes.release(data.offset + released, data.offset + end);
             released = end;
@@ -267,7 +267,7 @@ fn read_records(
             "heading is NaN",
         ));
     }
-    Ok((z, b, nu))
+    Ok((z.finish().0, b, nu))
 }
 
 /// Warnings about the records that do not stop the load: text data ending before the
@@ -460,6 +460,7 @@ impl RefLine {
             last_closed_range: (0.0, 0.0),
             normals: Vec::new(),
             seg_len: Vec::new(),
+            search: Vec::new(),
             curvature: Vec::new(),
             curv_step: 1,
         })

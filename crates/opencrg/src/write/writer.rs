@@ -148,13 +148,7 @@ pub fn write_to(road: &Road, out: &mut impl Write, format: DataFormat) -> io::Re
             row.push(ch[iu]);
         }
         let mean = g.mean;
-        row.extend(g.z[iu * g.nv..(iu + 1) * g.nv].iter().map(|&z| {
-            if mean == 0.0 {
-                f64::from(z)
-            } else {
-                f64::from(z) + mean
-            }
-        }));
+        row.extend(g.cross_section(iu).map(|z| if mean == 0.0 { f64::from(z) } else { f64::from(z) + mean }));
         if format.is_text() {
             text.clear();
             let per_line = 80 / width;
