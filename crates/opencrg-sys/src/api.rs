@@ -777,22 +777,32 @@ fn eval1(
 #[no_mangle]
 pub unsafe extern "C" fn crgEvalxy2uv(cpId: c_int, x: f64, y: f64, u: *mut f64, v: *mut f64) -> c_int {
     // SAFETY: the contract above.
-    let (u, v) = unsafe { (out(u), out(v)) };
-    if let (Some(u), Some(v)) = (u, v) {
-        // The common case first, as in `crgEvaluv2z`: the owner's way, the lean search.
-        if let Some(Some(found)) = registry::with_owned_cp_mut(cpId, |cp| cp.xy_to_uv_lean(x, y)) {
+    let (Some(u), Some(v)) = (unsafe { (out(u), out(v)) }) else { return 0 };
+    // The common case first, as in `crgEvaluv2z`: the owner's way, the lean search.
+    match registry::with_owned_cp_mut(cpId, |cp| cp.xy_to_uv_lean(x, y)) {
+        Some(Some(found)) => {
             (*u, *v) = found;
-            return 1;
+            1
         }
-        return xy2uv_general(cpId, x, y, u, v);
+        declined => xy2uv_general(cpId, declined.is_some(), x, y, u, v),
     }
-    0
 }
 
-/// `crgEvalxy2uv` for every case but the common one.
+/// `crgEvalxy2uv` for every case but the common one; `declined`: the lean search was
+/// tried and declined.
 #[inline(never)]
-fn xy2uv_general(cpId: c_int, x: f64, y: f64, u: &mut f64, v: &mut f64) -> c_int {
-    eval2("crgEvalxy2uv", cpId, Some(u), Some(v), |cp| cp.xy_to_uv(x, y))
+fn xy2uv_general(cpId: c_int, declined: bool, x: f64, y: f64, u: &mut f64, v: &mut f64) -> c_int {
+    eval2("crgEvalxy2uv", cpId, Some(u), Some(v), |cp| search_xy(cp, declined, x, y))
+}
+
+/// The x/y search of the general way: without a second try of the lean search where it
+/// just declined.
+fn search_xy(cp: &mut ContactPoint, declined: bool, x: f64, y: f64) -> opencrg::Result<(f64, f64)> {
+    if declined {
+        cp.xy_to_uv_general(x, y)
+    } else {
+        cp.xy_to_uv(x, y)
+    }
 }
 
 /// u/v to x/y.
@@ -850,14 +860,17 @@ pub unsafe extern "C" fn crgEvalxy2z(cpId: c_int, x: f64, y: f64, z: *mut f64) -
             1
         }
         Some(Some(Err((u, v)))) => eval1("crgEvalxy2z", cpId, Some(z), |cp| cp.z_of_found(u, v)),
-        _ => xy2z_general(cpId, x, y, z),
+        declined => xy2z_general(cpId, declined.is_some(), x, y, z),
     }
 }
 
-/// `crgEvalxy2z` for every case but the common one.
+/// `crgEvalxy2z` for every case but the common one (see `xy2uv_general`).
 #[inline(never)]
-fn xy2z_general(cpId: c_int, x: f64, y: f64, z: &mut f64) -> c_int {
-    eval1("crgEvalxy2z", cpId, Some(z), |cp| cp.xy_to_z(x, y))
+fn xy2z_general(cpId: c_int, declined: bool, x: f64, y: f64, z: &mut f64) -> c_int {
+    eval1("crgEvalxy2z", cpId, Some(z), |cp| {
+        let (u, v) = search_xy(cp, declined, x, y)?;
+        cp.z_of_found(u, v)
+    })
 }
 
 /// u/v to heading and curvature.
@@ -878,13 +891,15 @@ pub unsafe extern "C" fn crgEvaluv2pk(cpId: c_int, u: f64, v: f64, phi: *mut f64
 #[no_mangle]
 pub unsafe extern "C" fn crgEvalxy2pk(cpId: c_int, x: f64, y: f64, phi: *mut f64, curv: *mut f64) -> c_int {
     // SAFETY: the contract above.
-    let (phi, curv) = unsafe { (out(phi), out(curv)) };
-    let (Some(phi), Some(curv)) = (phi, curv) else { return 0 };
+    let (Some(phi), Some(curv)) = (unsafe { (out(phi), out(curv)) }) else { return 0 };
     // The search the lean way where it applies (see `crgEvalxy2uv`), then heading and
     // curvature at what it found, inside the guard.
-    let found = registry::with_owned_cp_mut(cpId, |cp| cp.xy_to_uv_lean(x, y)).flatten();
-    eval2("crgEvalxy2pk", cpId, Some(phi), Some(curv), |cp| match found {
-        Some((u, v)) => cp.uv_to_pk(u, v),
-        None => cp.xy_to_pk(x, y),
+    let found = registry::with_owned_cp_mut(cpId, |cp| cp.xy_to_uv_lean(x, y));
+    eval2("crgEvalxy2pk", cpId, Some(phi), Some(curv), |cp| {
+        let (u, v) = match found {
+            Some(Some(found)) => found,
+            declined => search_xy(cp, declined.is_some(), x, y)?,
+        };
+        cp.uv_to_pk(u, v)
     })
 }

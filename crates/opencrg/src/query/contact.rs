@@ -197,7 +197,8 @@ impl ContactPoint {
     /// The C library's call-free path of the x/y calls: (u, v) of (x, y) when the lean
     /// search applies (an earlier query lies within reach and the walk is short), with the history updated as
     /// [`ContactPoint::xy_to_uv`] updates it; `None`, with nothing changed, otherwise
-    /// (then `xy_to_uv` answers). Never panics; not part of the supported Rust API.
+    /// (then [`ContactPoint::xy_to_uv_general`] answers). Never panics; not part of the
+    /// supported Rust API.
     #[doc(hidden)]
     #[inline(always)]
     pub fn xy_to_uv_lean(&mut self, x: f64, y: f64) -> Option<(f64, f64)> {
@@ -231,11 +232,19 @@ impl ContactPoint {
     /// (u, v) of the point (x, y).
     #[inline]
     pub fn xy_to_uv(&mut self, x: f64, y: f64) -> Result<(f64, f64)> {
+        match self.xy_to_uv_lean(x, y) {
+            Some(found) => Ok(found),
+            None => self.xy_to_uv_general(x, y),
+        }
+    }
+
+    /// [`ContactPoint::xy_to_uv`] without trying the lean search first: for a caller
+    /// whose [`ContactPoint::xy_to_uv_lean`] just declined. Not part of the supported
+    /// Rust API.
+    #[doc(hidden)]
+    pub fn xy_to_uv_general(&mut self, x: f64, y: f64) -> Result<(f64, f64)> {
         finite(x, y)?;
         let road = &*self.road;
-        if let Some(found) = search::xy_to_uv_lean(&road.line, self.eval.closed_search, &mut self.history, x, y) {
-            return Ok(found);
-        }
         Ok(search::xy_to_uv(&road.line, &road.index, self.eval.closed_search, &mut self.history, x, y))
     }
 
@@ -260,10 +269,7 @@ impl ContactPoint {
     #[inline]
     pub fn xy_to_z(&mut self, x: f64, y: f64) -> Result<f64> {
         let (u, v) = self.xy_to_uv(x, y)?;
-        match self.z_of_found_plain(u, v) {
-            Some(z) => Ok(z),
-            None => self.z_of_found(u, v),
-        }
+        self.z_of_found(u, v)
     }
 
     /// The elevation [`ContactPoint::xy_to_z`] gives at the (u, v) its search found (no
@@ -272,7 +278,10 @@ impl ContactPoint {
     #[doc(hidden)]
     #[inline]
     pub fn z_of_found(&self, u: f64, v: f64) -> Result<f64> {
-        elevation(eval::uv_to_z(&self.road, &self.eval, u, v))
+        match self.z_of_found_plain(u, v) {
+            Some(z) => Ok(z),
+            None => elevation(eval::uv_to_z(&self.road, &self.eval, u, v)),
+        }
     }
 
     /// Heading and curvature at the point (x, y).

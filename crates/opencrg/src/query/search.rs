@@ -122,9 +122,24 @@ impl History {
         (dx * dx + dy * dy < self.reach2).then_some(newest.index)
     }
 
-    /// The index to start from: the newest entry within the close or the far distance.
-    /// Never panics.
+    /// [`History::lookup`] among the [`RECENT`] newest entries only: its answer when
+    /// the hit lies among them, `None` otherwise. Never panics.
     #[inline(always)]
+    fn recent_within(&self, x: f64, y: f64) -> Option<usize> {
+        if let Some(i) = self.newest_within(x, y) {
+            return Some(i);
+        }
+        let len = self.ring.len();
+        (1..self.used.min(RECENT))
+            .filter_map(|j| self.ring.get(if self.head + j >= len { self.head + j - len } else { self.head + j }))
+            .find(|e| {
+                let (dx, dy) = (x - e.x, y - e.y);
+                dx * dx + dy * dy < self.reach2
+            })
+            .map(|e| e.index)
+    }
+
+    /// The index to start from: the newest entry within the close or the far distance.
     fn lookup(&self, x: f64, y: f64) -> Option<usize> {
         if self.used == 0 {
             return None;
@@ -136,8 +151,7 @@ impl History {
     /// head to the end of the ring, then from its start.
     fn lookup_older(&self, x: f64, y: f64, limit: f64) -> Option<usize> {
         let first = self.ring.len().min(self.head + self.used);
-        let newer = self.ring.get(self.head + 1..first).unwrap_or_default();
-        let older = self.ring.get(..self.used - (first - self.head)).unwrap_or_default();
+        let (newer, older) = (&self.ring[self.head + 1..first], &self.ring[..self.used - (first - self.head)]);
         first_within(newer, x, y, limit).or_else(|| first_within(older, x, y, limit))
     }
 
@@ -157,6 +171,10 @@ impl History {
         self.set_newest(Entry { x, y, index });
     }
 }
+
+/// History entries the lean search looks at (the newest first): those of the wheels
+/// sharing a contact point, the step before.
+const RECENT: usize = 8;
 
 /// Steps the lean search walks at most before it leaves the point to the general one.
 const LEAN_STEPS: usize = 32;
@@ -281,8 +299,9 @@ fn beyond_ends(line: &RefLine, closed_search: bool, x: f64, y: f64, u: f64, v: f
     (u, v)
 }
 
-/// [`xy_to_uv`] for the common case of a point near an earlier one: a history entry is
-/// within reach and the walk is short and does not go around a closed track's end. The same answer and the same history change as
+/// [`xy_to_uv`] for the common case of a point near a recent one: one of the [`RECENT`]
+/// newest history entries is within reach, and the walk is short and does not go around
+/// a closed track's end. The same answer and the same history change as
 /// [`xy_to_uv`] then; `None`, with nothing changed, otherwise. Never panics.
 #[inline(always)]
 pub(crate) fn xy_to_uv_lean(
@@ -294,7 +313,7 @@ pub(crate) fn xy_to_uv_lean(
 ) -> Option<(f64, f64)> {
     let n = line.n;
     let pts = line.search.get(..n)?;
-    let start = history.lookup(x, y)?.min(n - 1).max(1);
+    let start = history.recent_within(x, y)?.min(n - 1).max(1);
     let (k, behind) = walk::<true>(pts, line.closed.is_some(), start, x, y)?;
     let found = solve(line, closed_search, k, behind, x, y)?;
     history.record(x, y, (k + 1).min(n - 1));
@@ -334,7 +353,8 @@ pub(crate) fn xy_to_uv(
 mod tests {
     use super::*;
 
-    /// The chunked lookup answers as the plain newest-first loop, across the ring's wrap.
+    /// The chunked lookup answers as the plain newest-first loop, across the ring's wrap,
+    /// and the lookup among the recent entries as that loop does when its hit is recent.
     #[test]
     fn lookup_finds_the_newest_entry_within_reach() {
         let mut seed = 3u64;
@@ -346,11 +366,14 @@ mod tests {
             let mut h = History::new(size, 0.5, 2.0);
             for step in 0..200 {
                 let (x, y) = (10.0 * random(), 10.0 * random());
-                let plain = (0..h.used).map(|j| h.get(j)).find(|e| {
+                let hit = (0..h.used).find(|&j| {
+                    let e = h.get(j);
                     let d2 = (x - e.x) * (x - e.x) + (y - e.y) * (y - e.y);
                     d2 < h.close2 || d2 < h.far2
                 });
-                assert_eq!(h.lookup(x, y), plain.map(|e| e.index), "size {size}, step {step}");
+                assert_eq!(h.lookup(x, y), hit.map(|j| h.get(j).index), "size {size}, step {step}");
+                let recent = hit.filter(|&j| j < RECENT).map(|j| h.get(j).index);
+                assert_eq!(h.recent_within(x, y), recent, "size {size}, step {step}");
                 h.record(x, y, step);
             }
         }
