@@ -60,6 +60,21 @@ pub(crate) fn prefetch<T>(p: *const T) {
     let _ = p;
 }
 
+/// [`prefetch`] into the second-level cache only: for data needed after many other
+/// loads have been started (a batch's cells blocks ahead). That cache tracks more
+/// misses at once than the first, so more of them overlap.
+#[inline(always)]
+pub(crate) fn prefetch_far<T>(p: *const T) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T1};
+        // SAFETY: as in `prefetch`.
+        unsafe { _mm_prefetch(p.cast(), _MM_HINT_T1) };
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = p;
+}
+
 /// `x` truncated to an index for a prefetch: out of range and NaN give some far index
 /// (harmless there), without the work Rust's saturating conversion does.
 #[inline(always)]

@@ -70,16 +70,18 @@ impl Clone for Grid {
 
 impl Grid {
     /// Asks the processor to start loading the values of the cell whose first corner
-    /// is (`iu`, `iv`): a run of each of its two long sections. The address is only
-    /// computed, never read.
+    /// is (`iu`, `iv`), a run of each of its two long sections, into the second-level
+    /// cache: for a lookup that comes many others later (see `memory::prefetch_far`).
+    /// The address is only computed, never read.
     #[inline(always)]
-    pub(crate) fn prefetch_cell(&self, iu: usize, iv: usize) {
+    pub(crate) fn prefetch_cell_far(&self, iu: usize, iv: usize) {
         let p = self.z.as_ptr().wrapping_add(iv.wrapping_mul(self.nu).wrapping_add(iu));
-        crate::memory::prefetch(p);
-        crate::memory::prefetch(p.wrapping_add(self.nu));
+        crate::memory::prefetch_far(p);
+        crate::memory::prefetch_far(p.wrapping_add(self.nu));
     }
 
-    /// [`Grid::prefetch_cell`], and what a wheel moving along the road reads next: the
+    /// Asks the processor to start loading the values of the cell whose first corner
+    /// is (`iu`, `iv`), and what a wheel moving along the road reads next: the
     /// following run of both long sections along u, and the long section beyond the
     /// cell's nearer side across it (`upper`: the side of `iv + 1`).
     #[inline(always)]

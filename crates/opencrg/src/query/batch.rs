@@ -1,7 +1,8 @@
 //! Batch evaluation: many points through one contact point in one call, with the same
 //! answers as the single-point calls made in order (the x/y search history included).
 //! The elevation batch finds the grid cells of the points a few blocks ahead and starts
-//! loading them, so the memory accesses of many points overlap.
+//! loading them into the second-level cache, so the memory accesses of many points
+//! overlap.
 
 use crate::contact::ContactPoint;
 use crate::error::Result;
@@ -9,8 +10,9 @@ use crate::eval::PlainCell;
 
 /// How many points the elevation batch locates at a time. Blocks of 16 with 3 blocks of
 /// lead were the best of the 4 to 32 points and 1 to 8 blocks measured on the 80 MB
-/// benchmark road: a longer burst of prefetches is partly wasted, a shorter lead arrives
-/// late.
+/// benchmark road (Intel Xeon), and 3 the best of 2 to 5 blocks with the cells loaded into
+/// the second-level cache (AMD EPYC): a longer burst of prefetches is partly wasted, a
+/// shorter lead arrives late.
 const BLOCK: usize = 16;
 
 /// How many blocks ahead of the one it computes the elevation batch locates cells.
@@ -58,7 +60,7 @@ impl ContactPoint {
             for ((cell, &u), &v) in cells.iter_mut().zip(&u[start..]).zip(&v[start..]) {
                 *cell = self.plain_cell(u, v);
                 if let Some(cell) = cell {
-                    cell.prefetch(road);
+                    cell.prefetch_far(road);
                 }
             }
         };

@@ -358,11 +358,11 @@ impl PlainCell {
         Some(PlainCell { iu, fu, iv, fv, v })
     }
 
-    /// Asks the processor to start loading the cell's grid values (see
-    /// [`PrefetchHint`](crate::grid::PrefetchHint); here the exact cell is known).
+    /// Asks the processor to start loading the cell's grid values into the second-level
+    /// cache, for an evaluation many others later (the batch's blocks ahead).
     #[inline(always)]
-    pub(crate) fn prefetch(&self, road: &Road) {
-        road.grid.prefetch_cell(self.iu, self.iv);
+    pub(crate) fn prefetch_far(&self, road: &Road) {
+        road.grid.prefetch_cell_far(self.iu, self.iv);
     }
 
     /// [`PlainCell::prefetch`], and the grid a wheel moving on from here reads next
