@@ -114,6 +114,9 @@ pub fn dataset_ids() -> Vec<c_int> {
 /// one), or -1.
 pub fn create_cp(dataset: c_int) -> c_int {
     let Some(road) = with_dataset(dataset, |d| d.road.clone()) else { return -1 };
+    // The owner path's barrier is registered now, with the contact point, so that the
+    // evaluation calls never make a system call (real-time callers rely on it).
+    crate::barrier::available();
     let mut table = lock(&CP_TABLE);
     let id = table.free.last().copied().unwrap_or(table.size);
     let (Some(s), Ok(c_id)) = (slot_or_create(id), c_int::try_from(id)) else { return -1 };
