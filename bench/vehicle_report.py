@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """Summarises the output of bench/vehicle_compare.sh: per road and case, the median and
-range (min-max) over the runs of the time per call and of the latency quantiles, for this
-project's library ("opencrg") and the other one, and the ratio of the median times
-(other / opencrg: how many times faster this library is).
+range (min-max) over the runs of the time per call and the medians of the latency
+quantiles, for this project's library ("opencrg") and the other one, and the ratio of
+the times of each pair of runs taken in turn (other / opencrg: how many times faster this
+library is), its median and range.
 
-usage: vehicle_report.py RESULTS   (lines "ROAD LIB case CALL SPEED MODE THREADS ns N p50 N
-p99 N p999 N max N" and "ROAD LIB cpu MODEL"); MARKDOWN=1 prints Markdown tables.
+usage: vehicle_report.py RESULTS   (lines "ROAD LIB RUN case CALL SPEED MODE THREADS ns N
+p50 N p99 N p999 N max N" and "ROAD LIB RUN cpu MODEL"); MARKDOWN=1 prints Markdown tables.
 """
 import os
 import statistics
@@ -16,12 +17,13 @@ def main(path):
     cpu, rows = set(), {}
     for line in open(path):
         f = line.split()
-        if len(f) > 3 and f[2] == "cpu":
-            cpu.add(" ".join(f[3:]))
-        if len(f) < 8 or f[2] != "case":
+        if len(f) > 4 and f[3] == "cpu":
+            cpu.add(" ".join(f[4:]))
+        if len(f) < 9 or f[3] != "case":
             continue
-        road, lib, case = f[0], f[1], " ".join(f[3:7])
-        values = dict(zip(f[7::2], map(float, f[8::2])))
+        road, lib, run, case = f[0], f[1], f[2], " ".join(f[4:8])
+        values = dict(zip(f[8::2], map(float, f[9::2])))
+        values["run"] = run
         rows.setdefault(road, {}).setdefault(case, {}).setdefault(lib, []).append(values)
     markdown = os.environ.get("MARKDOWN") == "1"
     print(f"processor: {', '.join(sorted(cpu))}")
@@ -37,7 +39,7 @@ def main(path):
         for lib in libs:
             head += [f"{lib} ns/call", f"{lib} p50 / p99 / p99.9 / max ns"]
         if len(libs) == 2:
-            head.append("ratio")
+            head.append("ratio (range)")
         if markdown:
             print("| " + " | ".join(head) + " |")
             print("|" + "|".join(" --- " if i < 4 else " ---: " for i in range(len(head))) + "|")
@@ -58,7 +60,9 @@ def main(path):
                 q = [fig(runs, k)[0] for k in ("p50", "p99", "p999", "max")]
                 cells.append(" / ".join(f"{v:.0f}" for v in q))
             if len(libs) == 2 and len(medians) == 2:
-                cells.append(f"{medians[libs[1]] / medians[libs[0]]:.2f}")
+                other = {r["run"]: r["ns"] for r in per[libs[1]]}
+                ratios = [other[r["run"]] / r["ns"] for r in per[libs[0]] if r["run"] in other]
+                cells.append(f"{statistics.median(ratios):.2f} ({min(ratios):.2f}-{max(ratios):.2f})")
             print(("| " + " | ".join(cells) + " |") if markdown else "  ".join(cells))
 
 

@@ -223,7 +223,7 @@ impl ContactPoint {
     }
 
     /// Heading and curvature at (u, v).
-    #[inline]
+    #[inline(always)]
     pub fn uv_to_pk(&self, u: f64, v: f64) -> Result<(f64, f64)> {
         finite(u, v)?;
         Ok(eval::uv_to_pk(&self.road, &self.eval, u, v))

@@ -623,7 +623,7 @@ pub(crate) fn place(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Optio
 /// Heading and curvature at (u, v). The heading is that of the reference line
 /// segment holding u (the releases' profile: the segment before it); the curvature comes from points 0.5 m apart (at least one
 /// increment) and, in lateral curvature mode, is that of the parallel at v.
-#[inline]
+#[inline(always)]
 pub(crate) fn uv_to_pk(road: &Road, options: &EvalOptions, u: f64, v: f64) -> (f64, f64) {
     let l = &road.line;
     if l.phi.is_none() && l.phi_first.to_bits() == l.phi_last.to_bits() {
