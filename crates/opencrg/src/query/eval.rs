@@ -236,12 +236,18 @@ fn clamp_index_sloped(frac: &mut f64, n: usize, slope: &mut f64) -> usize {
 /// the fraction within it.
 #[inline]
 fn clamp_index(frac: &mut f64, n: usize) -> usize {
+    clamp_index_to(frac, n, n.saturating_sub(1) as i64 as f64)
+}
+
+/// [`clamp_index`] with its bound `last` (`n - 1` as a double) computed beforehand.
+#[inline(always)]
+fn clamp_index_to(frac: &mut f64, n: usize, last: f64) -> usize {
     if *frac < 0.0 {
         *frac = 0.0;
     }
     // Indices stay far below 2^63, so i64 conversions are exact. The test is written
     // so that NaN takes the clamping branch.
-    if !(*frac < n.saturating_sub(1) as i64 as f64) {
+    if !(*frac < last) {
         *frac = 1.0;
         n.saturating_sub(2)
     } else {
@@ -253,11 +259,13 @@ fn clamp_index(frac: &mut f64, n: usize) -> usize {
 }
 
 /// The surface at interval (iu, fu) x (iv, fv): grid value (when `with_values`),
-/// reference line z, and banking times `v_bank`. Never panics: `None` where an index
-/// would leave the data (which the callers' index arithmetic rules out).
+/// reference line z, and banking times `v_bank`; the reference line terms take `fu`
+/// clamped to the cell (`FU_IN_CELL`: the caller knows it lies there). Never panics:
+/// `None` where an index would leave the data (which the callers' index arithmetic rules
+/// out).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn surface(
+fn surface<const FU_IN_CELL: bool>(
     road: &Road,
     iu: usize,
     fu: f64,
@@ -272,9 +280,8 @@ fn surface(
     if with_values {
         // The four corners: (iu, iv), (iu + 1, iv), and the same on the next long section.
         let (base, next) = (iv.wrapping_mul(g.nu).wrapping_add(iu), g.nu);
-        let long = g.z.get(base..)?;
-        let &[c00, c10] = long.first_chunk::<2>()?;
-        let &[c01, c11] = long.get(next..)?.first_chunk::<2>()?;
+        let cell = g.z.get(base..)?.get(..next.wrapping_add(2))?;
+        let (&[c00, c10], &[c01, c11]) = (cell.first_chunk::<2>()?, cell.last_chunk::<2>()?);
         let z00 = f64::from(c00);
         let z10 = f64::from(c10) - z00;
         let mut z01 = f64::from(c01);
@@ -283,7 +290,7 @@ fn surface(
         z = (z11 * fv + z10) * fu + z01 * fv + z00;
         z += g.mean;
     }
-    let fu = fu.clamp(0.0, 1.0);
+    let fu = if FU_IN_CELL { fu } else { fu.clamp(0.0, 1.0) };
     z += match &l.z {
         Some(rz) => lerp(rz, iu, fu)?,
         None => l.z_first,
@@ -324,14 +331,14 @@ fn plain_inside(road: &Road, options: &EvalOptions, u: f64, v: f64) -> bool {
 #[inline(always)]
 fn u_cell(l: &RefLine, u: f64) -> (usize, f64) {
     let mut fu = (u - l.u_first) / l.u_inc;
-    (clamp_index(&mut fu, l.n), fu)
+    (clamp_index_to(&mut fu, l.n, l.last_frac), fu)
 }
 
 /// The v interval index and fraction of a v inside an evenly spaced grid.
 #[inline(always)]
 fn v_cell(g: &crate::grid::Grid, v: f64) -> (usize, f64) {
     let mut fv = (v - g.v_first) / g.v_inc;
-    (clamp_index(&mut fv, g.nv), fv)
+    (clamp_index_to(&mut fv, g.nv, g.last_frac), fv)
 }
 
 /// Where a point of the common case (inside an evenly spaced grid, no smoothing zone)
@@ -375,7 +382,7 @@ impl PlainCell {
     /// The elevation of the surface at the point.
     #[inline(always)]
     pub(crate) fn elevation(&self, road: &Road) -> Option<f64> {
-        surface(road, self.iu, self.fu, self.iv, self.fv, self.v, true, true)
+        surface::<true>(road, self.iu, self.fu, self.iv, self.fv, self.v, true, true)
     }
 }
 
@@ -397,7 +404,7 @@ pub(crate) fn uv_to_z(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Opt
             VLayout::Indexed => v_cell(g, v),
             VLayout::Explicit => explicit_v(g, v),
         };
-        return surface(road, iu, fu, iv, fv, v, true, true);
+        return surface::<true>(road, iu, fu, iv, fv, v, true, true);
     }
     uv_to_z_borders(road, options, u, v)
 }
@@ -571,7 +578,7 @@ pub(crate) fn place(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Optio
     } else {
         v
     };
-    let mut z = surface(road, iu, ua.frac, iv, fv, vb, with_values, with_bank)?;
+    let mut z = surface::<false>(road, iu, ua.frac, iv, fv, vb, with_values, with_bank)?;
 
     let mut smooth = None;
     let (begin, end) = (options.smooth_begin, options.smooth_end);
