@@ -52,8 +52,8 @@ enum Command {
         input: PathBuf,
         /// The file to write.
         output: PathBuf,
-        /// The data format of the output.
-        #[arg(long, value_enum)]
+        /// The data format of the output (in any case).
+        #[arg(long, value_enum, ignore_case = true)]
         format: Format,
     },
     /// Read `u v` lines (or `x y` with --xy) from stdin, print CSV with z, x/y or u/v, heading and curvature.
@@ -83,11 +83,16 @@ enum Command {
     },
 }
 
+/// The data formats, named as in files and the specification.
 #[derive(Clone, Copy, ValueEnum)]
 enum Format {
+    #[value(name = "KRBI")]
     Krbi,
+    #[value(name = "KDBI")]
     Kdbi,
+    #[value(name = "LRFI")]
     Lrfi,
+    #[value(name = "LDFI")]
     Ldfi,
 }
 

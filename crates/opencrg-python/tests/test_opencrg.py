@@ -201,6 +201,10 @@ def test_write_and_read_back(road_file, tmp_path):
     back = opencrg.Road(out)
     assert same_bits(back.grid, road.grid)
     assert same_bits(back.reference_line.x, road.reference_line.x)
+    # Format names in any case.
+    for name in ("krbi", "Ldfi"):
+        road.write(out, name)
+        assert opencrg.Road(out).header["format"] == name.upper()
     with pytest.raises(ValueError, match="unknown format"):
         road.write(out, "XYZ")
 
