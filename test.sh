@@ -3,8 +3,9 @@
 # integration, header freshness, the opencrg command, doctests incl. the README's), then
 # through CTest the C tests (also under the sanitizers and valgrind), the header and
 # symbol checks, the CMake consumer project, the conformance suite in both behaviour
-# profiles (.so and .a) and the differential tester; last the Python package, installed
-# with pip into a virtual environment under target/, and its pytest suite.
+# profiles (.so and .a) and the differential tester; last the Python package: its
+# manylinux2014 wheel built with maturin and zig, installed into a fresh virtual
+# environment without cargo, and its pytest suite (pickling, multiprocessing, Dask).
 set -euo pipefail
 cd "$(dirname "$0")"
 cargo fmt --all --check
@@ -15,8 +16,19 @@ cargo build --release -p opencrg-capi -p opencrg-cli
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"
 ctest --test-dir build --output-on-failure -j"$(nproc)"
+# The Python wheel as users get it: manylinux2014 (glibc 2.17), abi3, linked by zig.
+python3 -m venv target/python-build
+target/python-build/bin/pip install -q --upgrade pip
+target/python-build/bin/pip install -q "maturin[zig]>=1.7,<2"
+rm -f target/wheels/opencrg-*.whl
+# (maturin finds zig through the `python` first on PATH: the build environment's.)
+env PATH="$PWD/target/python-build/bin:$PATH" maturin build -q --release --zig -m crates/opencrg-python/Cargo.toml --out target/wheels
+wheel=$(ls target/wheels/opencrg-*-cp39-abi3-*manylinux_2_17_x86_64*.whl)
+# Installed into a fresh environment where cargo cannot be found, and tested there.
+rm -rf target/python-venv
 python3 -m venv target/python-venv
-target/python-venv/bin/pip install -q --upgrade pip
-target/python-venv/bin/pip install -q numpy pytest
-target/python-venv/bin/pip install -q crates/opencrg-python
-OPENCRG_CLI="$PWD/target/release/opencrg" target/python-venv/bin/python -m pytest -q crates/opencrg-python/tests
+no_cargo=$(printf '%s' "$PATH" | tr ':' '\n' | grep -v -e cargo -e rustup | paste -sd: -)
+env PATH="$no_cargo" sh -c '! command -v cargo >/dev/null'
+env PATH="$no_cargo" target/python-venv/bin/pip install -q --upgrade pip
+env PATH="$no_cargo" target/python-venv/bin/pip install -q numpy pytest "dask[distributed]" "$wheel"
+env PATH="$no_cargo" OPENCRG_CLI="$PWD/target/release/opencrg" target/python-venv/bin/python -m pytest -q -p no:logging crates/opencrg-python/tests

@@ -1,5 +1,5 @@
 //! Python inputs to slices and results back: two coordinates given as scalars or
-//! array-likes of any shape are broadcast together and read as contiguous float64; the
+//! array-likes of any shape are broadcast together and read as contiguous, aligned float64; the
 //! results take their shape, or are Python floats when both inputs were scalars.
 
 use numpy::{PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArrayMethods};
@@ -24,8 +24,10 @@ impl<'py> Pair<'py> {
         let b = np.call_method1("asarray", (b, &float64))?;
         let scalar = a.getattr("ndim")?.extract::<usize>()? == 0 && b.getattr("ndim")?.extract::<usize>()? == 0;
         let both = np.call_method1("broadcast_arrays", (a, b))?;
+        // Contiguous and aligned (a copy where it is not: broadcast views, slices with a
+        // step, arrays in byte buffers received from other processes).
         let contiguous = |i: usize| -> PyResult<PyReadonlyArrayDyn<'py, f64>> {
-            let array = np.call_method1("ascontiguousarray", (both.get_item(i)?, &float64))?;
+            let array = np.call_method1("require", (both.get_item(i)?, &float64, "CA"))?;
             Ok(array.cast_into::<PyArrayDyn<f64>>()?.readonly())
         };
         let (a, b) = (contiguous(0)?, contiguous(1)?);

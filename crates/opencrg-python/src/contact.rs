@@ -6,7 +6,7 @@ use crate::road::Road;
 use ::opencrg as crg;
 use ::opencrg::settings::Family;
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::types::{PyDict, PyTuple};
 
 /// A point of evaluation on a road: its own options and x/y search history.
 ///
@@ -16,6 +16,9 @@ use pyo3::types::PyDict;
 /// search history entries. Evaluations accept numbers or arrays (broadcast together)
 /// and give floats or arrays, NaN where a point is refused, the same values as the C
 /// library's calls made point by point in order on one contact point.
+///
+/// A contact point pickles with its road (see `Road`), its options and its search history:
+/// unpickled, it gives the same answers, its next x/y searches included.
 #[pyclass(module = "opencrg")]
 pub(crate) struct ContactPoint {
     road: Py<Road>,
@@ -104,6 +107,32 @@ impl ContactPoint {
     fn __repr__(&self) -> String {
         format!("<opencrg.ContactPoint on {}>", self.inner.road().header().path.display())
     }
+
+    /// Pickling: the function that makes the contact point again, with its road, its
+    /// options and its search history `(size, close², far², [(x, y, index), ...])`.
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let make = py.import("opencrg")?.getattr("_contact_point_from_state")?;
+        let h = self.inner.search_history();
+        let history = (h.size, h.close_squared, h.far_squared, h.entries).into_pyobject(py)?;
+        let options = names::to_dict(py, self.inner.options())?;
+        let args = (self.road.clone_ref(py), options, history).into_pyobject(py)?;
+        Ok((make, args))
+    }
+}
+
+/// Makes a pickled contact point again (see `ContactPoint.__reduce__`).
+#[pyfunction]
+pub(crate) fn _contact_point_from_state(
+    road: Bound<'_, Road>,
+    options: &Bound<'_, PyDict>,
+    history: (usize, f64, f64, Vec<(f64, f64, usize)>),
+) -> PyResult<ContactPoint> {
+    let mut cp = ContactPoint::new(road, None, None)?;
+    cp.inner.clear_options();
+    set_options(&mut cp.inner, Some(options))?;
+    let (size, close_squared, far_squared, entries) = history;
+    cp.inner.set_search_history(&crg::SearchHistory { size, close_squared, far_squared, entries });
+    Ok(cp)
 }
 
 /// The evaluations as methods of `ContactPoint`: `cp.uv_to_z(u, v)`, ...

@@ -7,6 +7,7 @@
 //! - `evaluation`: the core's batch calls on Python inputs, options by name;
 //! - `arrays`: turning Python scalars and array-likes into slices and back;
 //! - `names`: the options' and modifiers' Python names, from the core's settings table;
+//! - `recipe`: how a road was made and changed, what a pickled road carries;
 //! - `errors`: the core's errors as Python exceptions.
 
 use pyo3::prelude::*;
@@ -16,6 +17,7 @@ mod contact;
 mod errors;
 mod evaluation;
 mod names;
+mod recipe;
 mod road;
 
 /// The module `opencrg`.
@@ -24,6 +26,8 @@ fn opencrg_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_class::<road::Road>()?;
     m.add_class::<contact::ContactPoint>()?;
+    m.add_function(wrap_pyfunction!(road::_road_from_recipe, m)?)?;
+    m.add_function(wrap_pyfunction!(contact::_contact_point_from_state, m)?)?;
     errors::register(m)?;
     names::register(m)?;
     Ok(())

@@ -66,18 +66,6 @@ pub(crate) fn value_for(s: &SettingInfo, value: &Bound<'_, PyAny>) -> PyResult<O
     }
 }
 
-/// Sets `name = value` in a table of `family`.
-pub(crate) fn set(table: &mut Settings, family: Family, name: &str, value: &Bound<'_, PyAny>) -> PyResult<u32> {
-    let s = lookup(family, name)?;
-    match value_for(s, value)? {
-        Some(v) => table.set_value(s.id, v).map_err(|e| PyValueError::new_err(e.to_string()))?,
-        None => {
-            table.remove(s.id);
-        }
-    }
-    Ok(s.id)
-}
-
 /// A table as a dict of Python names to values.
 pub(crate) fn to_dict<'py>(py: Python<'py>, table: &Settings) -> PyResult<Bound<'py, PyDict>> {
     let dict = PyDict::new(py);

@@ -4,6 +4,7 @@
 use crate::errors;
 use crate::evaluation::{evaluate, for_each_evaluation, set_options, Call};
 use crate::names;
+use crate::recipe::{Recipe, Step};
 use ::opencrg as crg;
 use ::opencrg::settings::Family;
 use ::opencrg::{Compat, DataFormat, LoadOptions};
@@ -34,6 +35,11 @@ static REFERENCE_LINE: PyOnceLock<Py<PyType>> = PyOnceLock::new();
 /// for the releases 2.0.1/1.2.0 or `"upstream"` (the default); when not given, the
 /// environment variable `OPENCRG_COMPAT` decides, as in the C library. The modifiers of
 /// the file are not applied until `apply_modifiers()` is called.
+///
+/// A road pickles (for `multiprocessing`, Dask, Ray): a road read from a file as the
+/// file's path (read again where it is unpickled, which refuses a file changed since), a
+/// road made from bytes as its bytes, each with its profile and the checks and modifiers
+/// applied since; unpickled, it gives the same answers.
 #[pyclass(module = "opencrg")]
 pub(crate) struct Road {
     inner: Arc<crg::Road>,
@@ -41,6 +47,8 @@ pub(crate) struct Road {
     version: u64,
     /// The grid array handed out since the last change.
     grid: Option<Py<PyAny>>,
+    /// How to make this road again.
+    recipe: Recipe,
 }
 
 impl Road {
@@ -54,14 +62,16 @@ impl Road {
         self.version
     }
 
-    fn from_core(road: crg::Road) -> Self {
-        Road { inner: Arc::new(road), version: 0, grid: None }
+    pub(crate) fn from_core(road: crg::Road, recipe: Recipe) -> Self {
+        Road { inner: Arc::new(road), version: 0, grid: None, recipe }
     }
 
-    /// The road for a change: contact points made before see it at their next call.
-    fn edit(&mut self) -> &mut crg::Road {
+    /// The road for a change, noted as `step`: contact points made before see it at their
+    /// next call.
+    fn edit(&mut self, step: Step) -> &mut crg::Road {
         self.version += 1;
         self.grid = None;
+        self.recipe.push(step);
         Arc::make_mut(&mut self.inner)
     }
 
@@ -93,7 +103,7 @@ impl Road {
     fn new(py: Python<'_>, path: PathBuf, compat: Option<&str>) -> PyResult<Self> {
         let options = LoadOptions { compat: self::compat(compat)?, ..LoadOptions::default() };
         let road = py.detach(|| crg::Road::load_with(&path, options)).map_err(errors::to_py)?;
-        Ok(Road::from_core(road))
+        Ok(Road::from_core(road, Recipe::file(&path, options.compat)))
     }
 
     /// A road from the bytes of a CRG file; `name` stands for the file in messages and
@@ -102,37 +112,56 @@ impl Road {
     #[pyo3(signature = (data, name = "<bytes>", *, compat = None))]
     fn from_bytes(py: Python<'_>, data: Vec<u8>, name: &str, compat: Option<&str>) -> PyResult<Self> {
         let options = LoadOptions { compat: self::compat(compat)?, ..LoadOptions::default() };
-        let road = py.detach(|| crg::Road::from_bytes_with(data, name, options)).map_err(errors::to_py)?;
-        Ok(Road::from_core(road))
+        let data = Arc::new(data);
+        let road = py.detach(|| crg::Road::from_bytes_with(data.to_vec(), name, options)).map_err(errors::to_py)?;
+        Ok(Road::from_core(road, Recipe::bytes(data, name, options.compat)))
+    }
+
+    /// Pickling: the function that makes the road again, and its recipe.
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let make = py.import("opencrg")?.getattr("_road_from_recipe")?;
+        Ok((make, PyTuple::new(py, [self.recipe.to_py(py)?])?))
     }
 
     /// Checks the road as `crgCheck` does; raises `opencrg.CheckError` when it fails.
     fn check(&mut self) -> PyResult<()> {
-        self.edit().check().map_err(errors::to_py)
+        self.edit(Step::Check).check().map_err(errors::to_py)
     }
 
     /// Applies the modifiers (the file's, or those set since) to the data.
     fn apply_modifiers(&mut self, py: Python<'_>) {
-        let road = self.edit();
+        let road = self.edit(Step::ApplyModifiers);
         py.detach(|| road.apply_modifiers());
     }
 
     /// Sets one modifier (`road.set_modifier("refline_offset_phi", 0.5)`, see
     /// `opencrg.MODIFIERS`); it acts at the next `apply_modifiers()`.
     fn set_modifier(&mut self, name: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
-        names::set(self.edit().modifiers_mut(), Family::Modifier, name, value).map(|_| ())
+        let s = names::lookup(Family::Modifier, name)?;
+        let step = match names::value_for(s, value)? {
+            Some(v) => Step::SetModifier(s.id, v),
+            None => Step::RemoveModifier(s.id),
+        };
+        let table = self.edit(step.clone()).modifiers_mut();
+        match step {
+            Step::SetModifier(id, v) => table.set_value(id, v).map_err(|e| PyValueError::new_err(e.to_string())),
+            _ => {
+                table.remove(s.id);
+                Ok(())
+            }
+        }
     }
 
     /// Removes one modifier.
     fn remove_modifier(&mut self, name: &str) -> PyResult<()> {
         let s = names::lookup(Family::Modifier, name)?;
-        self.edit().modifiers_mut().remove(s.id);
+        self.edit(Step::RemoveModifier(s.id)).modifiers_mut().remove(s.id);
         Ok(())
     }
 
     /// Removes every modifier.
     fn clear_modifiers(&mut self) {
-        self.edit().modifiers_mut().clear();
+        self.edit(Step::ClearModifiers).modifiers_mut().clear();
     }
 
     /// The modifiers, by name.
@@ -308,3 +337,11 @@ macro_rules! road_evaluations {
     };
 }
 for_each_evaluation!(road_evaluations);
+
+/// Makes a pickled road again (see `Road.__reduce__`).
+#[pyfunction]
+pub(crate) fn _road_from_recipe(py: Python<'_>, state: &Bound<'_, PyAny>) -> PyResult<Road> {
+    let recipe = Recipe::from_py(state)?;
+    let road = recipe.make(py)?;
+    Ok(Road::from_core(road, recipe))
+}

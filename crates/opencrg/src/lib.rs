@@ -67,7 +67,7 @@ pub use write::writer;
 
 pub use base::setting_values::{Continuation, CpOption, CurvMode, Modifier};
 pub use compat::{Compat, UnknownCompat};
-pub use contact::ContactPoint;
+pub use contact::{ContactPoint, SearchHistory};
 pub use error::{Error, Location, Result};
 pub use header::{Channel, DataFormat};
 pub use road::{LoadOptions, Road};

@@ -11,6 +11,22 @@ use std::sync::Arc;
 const DEFAULT_CLOSE: f64 = 0.3;
 const DEFAULT_FAR: f64 = 2.2;
 
+/// A contact point's x/y search history, to carry it elsewhere (a copy of the contact
+/// point in another process, say): the ring's size, the squared close and far distances,
+/// and the entries, newest first (each an earlier point and the reference line point its
+/// search ended at).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SearchHistory {
+    /// How many entries the ring holds.
+    pub size: usize,
+    /// The squared distance under which an entry is a close hit.
+    pub close_squared: f64,
+    /// The squared distance under which an entry is a far hit.
+    pub far_squared: f64,
+    /// (x, y, reference line point index), newest first.
+    pub entries: Vec<(f64, f64, usize)>,
+}
+
 /// Evaluates a road with its own options and x/y search history.
 ///
 /// Contact points are cheap; give each thread (or each wheel) its own. The road is
@@ -141,6 +157,19 @@ impl ContactPoint {
     /// that never passes, and its answers follow what it does.
     pub fn set_history(&mut self, size: usize) {
         self.history.resize(size);
+    }
+
+    /// The x/y search history as it stands.
+    pub fn search_history(&self) -> SearchHistory {
+        let (size, close_squared, far_squared, entries) = self.history.state();
+        SearchHistory { size, close_squared, far_squared, entries }
+    }
+
+    /// Replaces the x/y search history (as another contact point's
+    /// [`ContactPoint::search_history`] gave it): the searches that follow start as that
+    /// contact point's would.
+    pub fn set_search_history(&mut self, h: &SearchHistory) {
+        self.history = History::from_state(h.size, h.close_squared, h.far_squared, &h.entries);
     }
 
     /// x/y of (u, v).

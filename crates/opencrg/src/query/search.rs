@@ -155,6 +155,30 @@ impl History {
         first_within(newer, x, y, limit).or_else(|| first_within(older, x, y, limit))
     }
 
+    /// The entries as (x, y, index), newest first, and the ring's size and squared
+    /// close and far distances: everything the search reads.
+    pub(crate) fn state(&self) -> (usize, f64, f64, Vec<(f64, f64, usize)>) {
+        let len = self.ring.len();
+        let entries = (0..self.used)
+            .filter_map(|j| self.ring.get((self.head + j) % len.max(1)))
+            .map(|e| (e.x, e.y, e.index))
+            .collect();
+        (len, self.close2, self.far2, entries)
+    }
+
+    /// A history of `size` entries with these squared distances and entries (newest
+    /// first; those beyond the size are dropped).
+    pub(crate) fn from_state(size: usize, close2: f64, far2: f64, entries: &[(f64, f64, usize)]) -> Self {
+        let mut h = History::new(size, close2, far2);
+        if size > 0 {
+            for &(x, y, index) in entries.iter().take(size).rev() {
+                h.push_front(Entry { x, y, index });
+                h.used += 1;
+            }
+        }
+        h
+    }
+
     /// Records a result: a new newest entry, unless the newest one has the same index
     /// (then it is overwritten). Never panics.
     #[inline]
@@ -434,6 +458,27 @@ mod tests {
         }
         assert!(closed_tested, "the circle can be closed");
         assert!(lean_answers > 20_000, "the lean search answered {lean_answers} times");
+    }
+
+    /// A history taken apart and made again answers every lookup alike and records alike.
+    #[test]
+    fn history_state_makes_the_same_history() {
+        for size in [0, 1, 2, 3, 7, 50] {
+            let mut h = History::new(size, 0.25, 4.0);
+            for step in 0..(size * 3 + 2) {
+                h.record(step as f64 * 0.7, (step % 5) as f64, step / 2);
+            }
+            let (len, close2, far2, entries) = h.state();
+            let mut again = History::from_state(len, close2, far2, &entries);
+            assert_eq!(again.state(), h.state(), "size {size}");
+            for probe in 0..40 {
+                let (x, y) = (probe as f64 * 0.31, (probe % 7) as f64 * 0.5);
+                assert_eq!(again.lookup(x, y), h.lookup(x, y), "size {size}, probe {probe}");
+            }
+            h.record(1.0, 1.0, 999);
+            again.record(1.0, 1.0, 999);
+            assert_eq!(again.state(), h.state(), "size {size} after a record");
+        }
     }
 
     #[test]

@@ -1,0 +1,183 @@
+//! How a road was made and what was done to it since: what a pickled `Road` carries, so
+//! that unpickling makes the same road again (the same steps on the same data give the
+//! same numbers).
+//!
+//! A road read from a file carries the file's path, size and modification time: the file
+//! is read again where the road is unpickled (another process on the same machine, or a
+//! worker sharing the file system), and a file that changed meanwhile is refused. A road
+//! made from bytes carries the bytes.
+
+use ::opencrg as crg;
+use ::opencrg::settings::Value;
+use ::opencrg::{Compat, LoadOptions};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyBytes, PyTuple};
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::time::UNIX_EPOCH;
+
+/// Where a road's data came from.
+#[derive(Clone)]
+enum Origin {
+    /// A file: its path, size and modification time (nanoseconds since 1970) when read.
+    File { path: PathBuf, len: u64, modified: u128 },
+    /// Bytes, and the name they were given.
+    Bytes { data: Arc<Vec<u8>>, name: String },
+}
+
+/// A change made to a road after it was read.
+#[derive(Clone)]
+pub(crate) enum Step {
+    Check,
+    ApplyModifiers,
+    SetModifier(u32, Value),
+    RemoveModifier(u32),
+    ClearModifiers,
+}
+
+/// Where a road came from, its behaviour profile and the changes made to it.
+#[derive(Clone)]
+pub(crate) struct Recipe {
+    origin: Origin,
+    compat: Compat,
+    steps: Vec<Step>,
+}
+
+/// The size and modification time of a file.
+fn stamp(path: &Path) -> std::io::Result<(u64, u128)> {
+    let meta = std::fs::metadata(path)?;
+    let modified = meta.modified()?.duration_since(UNIX_EPOCH).map(|d| d.as_nanos()).unwrap_or(0);
+    Ok((meta.len(), modified))
+}
+
+impl Recipe {
+    /// A road read from `path`: its absolute path and stamp (taken after the read).
+    pub(crate) fn file(path: &Path, compat: Compat) -> Self {
+        let path = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+        let (len, modified) = stamp(&path).unwrap_or((0, 0));
+        Recipe { origin: Origin::File { path, len, modified }, compat, steps: Vec::new() }
+    }
+
+    /// A road made from `data` named `name`.
+    pub(crate) fn bytes(data: Arc<Vec<u8>>, name: &str, compat: Compat) -> Self {
+        Recipe { origin: Origin::Bytes { data, name: name.to_string() }, compat, steps: Vec::new() }
+    }
+
+    /// Notes a change.
+    pub(crate) fn push(&mut self, step: Step) {
+        self.steps.push(step);
+    }
+
+    /// The recipe as Python values: `(1, origin, compat, steps)`, where origin is
+    /// `("file", path, size, mtime_ns)` or `("bytes", data, name)`, and each step a tuple
+    /// `("check",)`, `("apply",)`, `("set", id, value)`, `("remove", id)` or `("clear",)`.
+    pub(crate) fn to_py<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
+        let origin = match &self.origin {
+            Origin::File { path, len, modified } => {
+                (("file", path.to_string_lossy().into_owned(), *len, *modified).into_pyobject(py)?).into_any()
+            }
+            Origin::Bytes { data, name } => {
+                (("bytes", PyBytes::new(py, data), name.as_str()).into_pyobject(py)?).into_any()
+            }
+        };
+        let steps = self
+            .steps
+            .iter()
+            .map(|step| {
+                Ok(match step {
+                    Step::Check => ("check",).into_pyobject(py)?.into_any(),
+                    Step::ApplyModifiers => ("apply",).into_pyobject(py)?.into_any(),
+                    Step::SetModifier(id, Value::Int(v)) => ("set", *id, *v).into_pyobject(py)?.into_any(),
+                    Step::SetModifier(id, Value::Double(v)) => ("set", *id, *v).into_pyobject(py)?.into_any(),
+                    Step::RemoveModifier(id) => ("remove", *id).into_pyobject(py)?.into_any(),
+                    Step::ClearModifiers => ("clear",).into_pyobject(py)?.into_any(),
+                })
+            })
+            .collect::<PyResult<Vec<_>>>()?;
+        (1u32, origin, self.compat.to_string(), steps).into_pyobject(py)
+    }
+
+    /// The recipe from what [`Recipe::to_py`] gave.
+    pub(crate) fn from_py(state: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let bad = |what: &str| PyValueError::new_err(format!("not a pickled opencrg.Road: {what}"));
+        let (version, origin, compat, steps): (u32, Bound<'_, PyAny>, String, Vec<Bound<'_, PyAny>>) =
+            state.extract().map_err(|_| bad("its state"))?;
+        if version != 1 {
+            return Err(bad(&format!("state version {version}")));
+        }
+        let compat: Compat = compat.parse().map_err(|e: crg::UnknownCompat| PyValueError::new_err(e.to_string()))?;
+        let kind: String = origin.get_item(0)?.extract()?;
+        let origin = match kind.as_str() {
+            "file" => {
+                let (_, path, len, modified): (String, PathBuf, u64, u128) = origin.extract()?;
+                Origin::File { path, len, modified }
+            }
+            "bytes" => {
+                let (_, data, name): (String, Vec<u8>, String) = origin.extract()?;
+                Origin::Bytes { data: Arc::new(data), name }
+            }
+            other => return Err(bad(&format!("origin '{other}'"))),
+        };
+        let steps = steps
+            .iter()
+            .map(|step| {
+                let kind: String = step.get_item(0)?.extract()?;
+                Ok(match kind.as_str() {
+                    "check" => Step::Check,
+                    "apply" => Step::ApplyModifiers,
+                    "remove" => Step::RemoveModifier(step.get_item(1)?.extract()?),
+                    "clear" => Step::ClearModifiers,
+                    "set" => {
+                        let id: u32 = step.get_item(1)?.extract()?;
+                        let value = step.get_item(2)?;
+                        let value = if value.is_instance_of::<pyo3::types::PyFloat>() {
+                            Value::Double(value.extract()?)
+                        } else {
+                            Value::Int(value.extract()?)
+                        };
+                        Step::SetModifier(id, value)
+                    }
+                    other => return Err(bad(&format!("step '{other}'"))),
+                })
+            })
+            .collect::<PyResult<Vec<_>>>()?;
+        Ok(Recipe { origin, compat, steps })
+    }
+
+    /// Makes the road again: reads the data (refusing a file that changed since), then
+    /// takes the same steps.
+    pub(crate) fn make(&self, py: Python<'_>) -> PyResult<crg::Road> {
+        let options = LoadOptions { compat: self.compat, ..LoadOptions::default() };
+        let road = match &self.origin {
+            Origin::File { path, len, modified } => {
+                if stamp(path)? != (*len, *modified) {
+                    return Err(PyValueError::new_err(format!(
+                        "{} changed since the road was pickled (size or modification time)",
+                        path.display()
+                    )));
+                }
+                py.detach(|| crg::Road::load_with(path, options))
+            }
+            Origin::Bytes { data, name } => py.detach(|| crg::Road::from_bytes_with(data.to_vec(), name, options)),
+        };
+        let mut road = road.map_err(crate::errors::to_py)?;
+        for step in &self.steps {
+            match step {
+                // A check that failed changed the road as it changes it here.
+                Step::Check => {
+                    let _ = road.check();
+                }
+                Step::ApplyModifiers => py.detach(|| road.apply_modifiers()),
+                Step::SetModifier(id, value) => {
+                    let _ = road.modifiers_mut().set_value(*id, *value);
+                }
+                Step::RemoveModifier(id) => {
+                    road.modifiers_mut().remove(*id);
+                }
+                Step::ClearModifiers => road.modifiers_mut().clear(),
+            }
+        }
+        Ok(road)
+    }
+}
