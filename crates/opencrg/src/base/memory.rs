@@ -45,19 +45,29 @@ fn advise_huge_pages(start: *const u8, len: usize) {
 #[cfg(not(target_os = "linux"))]
 fn advise_huge_pages(_start: *const u8, _len: usize) {}
 
-/// Asks the processor to start loading the cache line holding `p` into its caches.
-/// Never faults and reads nothing the program sees, whatever `p` is.
+/// The cache a prefetch fills, as x86 numbers it: the first level (`_MM_HINT_T0`) or
+/// the second (`_MM_HINT_T1`).
+const FIRST_LEVEL: i32 = 3;
+const SECOND_LEVEL: i32 = 2;
+
+/// Asks the processor to start loading the cache line holding `p` into the cache
+/// `LEVEL`. Never faults and reads nothing the program sees, whatever `p` is.
 #[inline(always)]
-pub(crate) fn prefetch<T>(p: *const T) {
+fn prefetch_into<const LEVEL: i32, T>(p: *const T) {
     #[cfg(target_arch = "x86_64")]
-    {
-        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
-        // SAFETY: a prefetch never faults and reads nothing the program sees; the
-        // address is never dereferenced.
-        unsafe { _mm_prefetch(p.cast(), _MM_HINT_T0) };
-    }
+    // SAFETY: a prefetch never faults and reads nothing the program sees; the address is
+    // never dereferenced.
+    unsafe {
+        std::arch::x86_64::_mm_prefetch::<LEVEL>(p.cast())
+    };
     #[cfg(not(target_arch = "x86_64"))]
     let _ = p;
+}
+
+/// Asks the processor to start loading the cache line holding `p` into its caches.
+#[inline(always)]
+pub(crate) fn prefetch<T>(p: *const T) {
+    prefetch_into::<FIRST_LEVEL, T>(p);
 }
 
 /// [`prefetch`] into the second-level cache only: for data needed after many other
@@ -65,14 +75,7 @@ pub(crate) fn prefetch<T>(p: *const T) {
 /// misses at once than the first, so more of them overlap.
 #[inline(always)]
 pub(crate) fn prefetch_far<T>(p: *const T) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T1};
-        // SAFETY: as in `prefetch`.
-        unsafe { _mm_prefetch(p.cast(), _MM_HINT_T1) };
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = p;
+    prefetch_into::<SECOND_LEVEL, T>(p);
 }
 
 /// `x` truncated to an index for a prefetch: out of range and NaN give some far index
