@@ -36,6 +36,22 @@ pub(crate) enum Step {
     ClearModifiers,
 }
 
+impl Step {
+    /// Takes the step on `road`.
+    pub(crate) fn apply(&self, road: &mut crg::Road) -> crg::Result<()> {
+        match *self {
+            Step::Check => return road.check(),
+            Step::ApplyModifiers => road.apply_modifiers(),
+            Step::SetModifier(id, value) => road.modifiers_mut().set_value(id, value)?,
+            Step::RemoveModifier(id) => {
+                road.modifiers_mut().remove(id);
+            }
+            Step::ClearModifiers => road.modifiers_mut().clear(),
+        }
+        Ok(())
+    }
+}
+
 /// Where a road came from, its behaviour profile and the changes made to it.
 #[derive(Clone)]
 pub(crate) struct Recipe {
@@ -149,35 +165,25 @@ impl Recipe {
     /// takes the same steps.
     pub(crate) fn make(&self, py: Python<'_>) -> PyResult<crg::Road> {
         let options = LoadOptions { compat: self.compat, ..LoadOptions::default() };
-        let road = match &self.origin {
-            Origin::File { path, len, modified } => {
-                if stamp(path)? != (*len, *modified) {
-                    return Err(PyValueError::new_err(format!(
-                        "{} changed since the road was pickled (size or modification time)",
-                        path.display()
-                    )));
-                }
-                py.detach(|| crg::Road::load_with(path, options))
-            }
-            Origin::Bytes { data, name } => py.detach(|| crg::Road::from_bytes_with(data.to_vec(), name, options)),
-        };
-        let mut road = road.map_err(crate::errors::to_py)?;
-        for step in &self.steps {
-            match step {
-                // A check that failed changed the road as it changes it here.
-                Step::Check => {
-                    let _ = road.check();
-                }
-                Step::ApplyModifiers => py.detach(|| road.apply_modifiers()),
-                Step::SetModifier(id, value) => {
-                    let _ = road.modifiers_mut().set_value(*id, *value);
-                }
-                Step::RemoveModifier(id) => {
-                    road.modifiers_mut().remove(*id);
-                }
-                Step::ClearModifiers => road.modifiers_mut().clear(),
+        if let Origin::File { path, len, modified } = &self.origin {
+            if stamp(path)? != (*len, *modified) {
+                return Err(PyValueError::new_err(format!(
+                    "{} changed since the road was pickled (size or modification time)",
+                    path.display()
+                )));
             }
         }
-        Ok(road)
+        py.detach(|| {
+            let mut road = match &self.origin {
+                Origin::File { path, .. } => crg::Road::load_with(path, options)?,
+                Origin::Bytes { data, name } => crg::Road::from_bytes_with(data.to_vec(), name, options)?,
+            };
+            for step in &self.steps {
+                // A step that failed (a check) changes the road here as it changed it there.
+                let _ = step.apply(&mut road);
+            }
+            Ok(road)
+        })
+        .map_err(crate::errors::to_py)
     }
 }

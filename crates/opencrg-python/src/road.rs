@@ -66,13 +66,15 @@ impl Road {
         Road { inner: Arc::new(road), version: 0, grid: None, recipe }
     }
 
-    /// The road for a change, noted as `step`: contact points made before see it at their
-    /// next call.
-    fn edit(&mut self, step: Step) -> &mut crg::Road {
+    /// Takes `step` on the road and notes it in the recipe: contact points made before
+    /// see the change at their next call.
+    fn change(&mut self, py: Python<'_>, step: Step) -> PyResult<()> {
         self.version += 1;
         self.grid = None;
+        let road = Arc::make_mut(&mut self.inner);
+        let result = py.detach(|| step.apply(road));
         self.recipe.push(step);
-        Arc::make_mut(&mut self.inner)
+        result.map_err(errors::to_py)
     }
 
     fn eval_with<'py>(
@@ -124,44 +126,34 @@ impl Road {
     }
 
     /// Checks the road as `crgCheck` does; raises `opencrg.CheckError` when it fails.
-    fn check(&mut self) -> PyResult<()> {
-        self.edit(Step::Check).check().map_err(errors::to_py)
+    fn check(&mut self, py: Python<'_>) -> PyResult<()> {
+        self.change(py, Step::Check)
     }
 
     /// Applies the modifiers (the file's, or those set since) to the data.
-    fn apply_modifiers(&mut self, py: Python<'_>) {
-        let road = self.edit(Step::ApplyModifiers);
-        py.detach(|| road.apply_modifiers());
+    fn apply_modifiers(&mut self, py: Python<'_>) -> PyResult<()> {
+        self.change(py, Step::ApplyModifiers)
     }
 
     /// Sets one modifier (`road.set_modifier("refline_offset_phi", 0.5)`, see
     /// `opencrg.MODIFIERS`); it acts at the next `apply_modifiers()`.
-    fn set_modifier(&mut self, name: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
+    fn set_modifier(&mut self, py: Python<'_>, name: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
         let s = names::lookup(Family::Modifier, name)?;
-        let step = match names::value_for(s, value)? {
-            Some(v) => Step::SetModifier(s.id, v),
-            None => Step::RemoveModifier(s.id),
-        };
-        let table = self.edit(step.clone()).modifiers_mut();
-        match step {
-            Step::SetModifier(id, v) => table.set_value(id, v).map_err(|e| PyValueError::new_err(e.to_string())),
-            _ => {
-                table.remove(s.id);
-                Ok(())
-            }
+        match names::value_for(s, value)? {
+            Some(v) => self.change(py, Step::SetModifier(s.id, v)),
+            None => self.change(py, Step::RemoveModifier(s.id)),
         }
     }
 
     /// Removes one modifier.
-    fn remove_modifier(&mut self, name: &str) -> PyResult<()> {
+    fn remove_modifier(&mut self, py: Python<'_>, name: &str) -> PyResult<()> {
         let s = names::lookup(Family::Modifier, name)?;
-        self.edit(Step::RemoveModifier(s.id)).modifiers_mut().remove(s.id);
-        Ok(())
+        self.change(py, Step::RemoveModifier(s.id))
     }
 
     /// Removes every modifier.
-    fn clear_modifiers(&mut self) {
-        self.edit(Step::ClearModifiers).modifiers_mut().clear();
+    fn clear_modifiers(&mut self, py: Python<'_>) -> PyResult<()> {
+        self.change(py, Step::ClearModifiers)
     }
 
     /// The modifiers, by name.

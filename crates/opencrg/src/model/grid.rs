@@ -42,7 +42,8 @@ pub struct Grid {
     /// Where the v search starts, at evenly spaced positions over `v_first..v_last`
     /// (empty when that range is empty); see [`Grid::v_interval`].
     pub(crate) v_table: Vec<usize>,
-    /// `nv - 1` as a double: the largest grid fraction across the road.
+    /// `nv - 1` as a double: the largest grid fraction across the road (set where the
+    /// grid is made; `nv` never changes).
     pub(crate) last_frac: f64,
 }
 
@@ -171,11 +172,9 @@ impl Grid {
         }
     }
 
-    /// Builds the table [`Grid::v_interval`] starts from (for evenly spaced positions
-    /// over `v_first..v_last`, the interval a full bisection finds) and notes the
-    /// largest grid fraction across the road.
+    /// Builds the table [`Grid::v_interval`] starts from: for evenly spaced positions
+    /// over `v_first..v_last`, the interval a full bisection finds.
     pub(crate) fn build_v_table(&mut self) {
-        self.last_frac = self.nv.saturating_sub(1) as i64 as f64;
         let range = self.v_last - self.v_first;
         self.v_table = if range == 0.0 || self.nv < 2 {
             Vec::new()
@@ -396,7 +395,7 @@ mod tests {
             v_inc: 1.0,
             layout: VLayout::Indexed,
             v_table: Vec::new(),
-            last_frac: (nv - 1) as f64,
+            last_frac: (nv - 1) as i64 as f64,
         }
     }
 

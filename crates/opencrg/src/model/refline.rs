@@ -150,7 +150,8 @@ pub struct RefLine {
     pub(crate) seg_len: Vec<f64>,
     /// Per cross section: the point and its direction, as the x/y search reads them.
     pub(crate) search: Vec<SearchPoint>,
-    /// `n - 1` as a double: the largest grid fraction along u.
+    /// `n - 1` as a double: the largest grid fraction along u (set where the line is
+    /// made; `n` never changes).
     pub(crate) last_frac: f64,
     /// Per cross section: the reference line curvature over 0.5 m (see [`RefLine::curvature_step`]).
     pub(crate) curvature: Vec<f64>,
@@ -377,7 +378,6 @@ impl RefLine {
                 (dx * dx + dy * dy).sqrt()
             })
             .collect();
-        self.last_frac = n.saturating_sub(1) as i64 as f64;
         self.search = (0..n)
             .map(|i| {
                 let (before, after) = (i.saturating_sub(1), (i + 1).min(n - 1));

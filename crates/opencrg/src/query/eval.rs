@@ -41,14 +41,15 @@ pub(crate) struct EvalOptions {
 
 impl From<&Settings> for EvalOptions {
     fn from(o: &Settings) -> Self {
+        let (smooth_begin, smooth_end) = (o.get_double(opt::SMOOTH_U_BEGIN), o.get_double(opt::SMOOTH_U_END));
         EvalOptions {
             border_u: o.get_int(opt::BORDER_MODE_U).unwrap_or(NONE),
             border_v: o.get_int(opt::BORDER_MODE_V).unwrap_or(EX_KEEP),
             offset_u: o.get_double(opt::BORDER_OFFSET_U).unwrap_or(0.0),
             offset_v: o.get_double(opt::BORDER_OFFSET_V).unwrap_or(0.0),
-            smooth_begin: o.get_double(opt::SMOOTH_U_BEGIN),
-            smooth_end: o.get_double(opt::SMOOTH_U_END),
-            no_smoothing: o.get_double(opt::SMOOTH_U_BEGIN).is_none() && o.get_double(opt::SMOOTH_U_END).is_none(),
+            smooth_begin,
+            smooth_end,
+            no_smoothing: smooth_begin.is_none() && smooth_end.is_none(),
             curv_lateral: o.has_int(opt::CURV_MODE, 0),
             close_track: o.has_int(opt::REFLINE_CONTINUE, 1),
             closed_search: o.has_int(opt::BORDER_MODE_U, 1),
@@ -372,8 +373,8 @@ impl PlainCell {
         road.grid.prefetch_cell_far(self.iu, self.iv);
     }
 
-    /// [`PlainCell::prefetch`], and the grid a wheel moving on from here reads next
-    /// (see `Grid::prefetch_path`).
+    /// Asks the processor to start loading the cell's grid values, and the grid a wheel
+    /// moving on from here reads next (see `Grid::prefetch_path`).
     #[inline(always)]
     pub(crate) fn prefetch_path(&self, road: &Road) {
         road.grid.prefetch_path(self.iu, self.iv, self.fv > 0.5);

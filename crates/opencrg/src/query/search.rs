@@ -77,14 +77,12 @@ impl History {
         self.reach2 = self.close2.max(self.far2);
     }
 
-    /// Entry `j` (0 is the newest), `j` below the length.
-    #[cfg(test)]
-    fn get(&self, j: usize) -> &Entry {
-        let mut k = self.head + j;
-        if k >= self.ring.len() {
-            k -= self.ring.len();
-        }
-        &self.ring[k]
+    /// Entry `j` (0 is the newest, `j` below the ring's size; `None` beyond it). One
+    /// conditional subtraction wraps the ring instead of a division.
+    #[inline(always)]
+    fn entry(&self, j: usize) -> Option<&Entry> {
+        let k = self.head + j;
+        self.ring.get(if k >= self.ring.len() { k - self.ring.len() } else { k })
     }
 
     #[inline]
@@ -129,9 +127,8 @@ impl History {
         if let Some(i) = self.newest_within(x, y) {
             return Some(i);
         }
-        let len = self.ring.len();
         (1..self.used.min(RECENT))
-            .filter_map(|j| self.ring.get(if self.head + j >= len { self.head + j - len } else { self.head + j }))
+            .filter_map(|j| self.entry(j))
             .find(|e| {
                 let (dx, dy) = (x - e.x, y - e.y);
                 dx * dx + dy * dy < self.reach2
@@ -158,12 +155,8 @@ impl History {
     /// The entries as (x, y, index), newest first, and the ring's size and squared
     /// close and far distances: everything the search reads.
     pub(crate) fn state(&self) -> (usize, f64, f64, Vec<(f64, f64, usize)>) {
-        let len = self.ring.len();
-        let entries = (0..self.used)
-            .filter_map(|j| self.ring.get((self.head + j) % len.max(1)))
-            .map(|e| (e.x, e.y, e.index))
-            .collect();
-        (len, self.close2, self.far2, entries)
+        let entries = (0..self.used).filter_map(|j| self.entry(j)).map(|e| (e.x, e.y, e.index)).collect();
+        (self.ring.len(), self.close2, self.far2, entries)
     }
 
     /// A history of `size` entries with these squared distances and entries (newest
@@ -391,12 +384,12 @@ mod tests {
             for step in 0..200 {
                 let (x, y) = (10.0 * random(), 10.0 * random());
                 let hit = (0..h.used).find(|&j| {
-                    let e = h.get(j);
+                    let e = h.entry(j).unwrap();
                     let d2 = (x - e.x) * (x - e.x) + (y - e.y) * (y - e.y);
                     d2 < h.close2 || d2 < h.far2
                 });
-                assert_eq!(h.lookup(x, y), hit.map(|j| h.get(j).index), "size {size}, step {step}");
-                let recent = hit.filter(|&j| j < RECENT).map(|j| h.get(j).index);
+                assert_eq!(h.lookup(x, y), hit.map(|j| h.entry(j).unwrap().index), "size {size}, step {step}");
+                let recent = hit.filter(|&j| j < RECENT).map(|j| h.entry(j).unwrap().index);
                 assert_eq!(h.recent_within(x, y), recent, "size {size}, step {step}");
                 h.record(x, y, step);
             }
@@ -488,7 +481,7 @@ mod tests {
         h.record(10.0, 0.0, 6);
         h.record(20.0, 0.0, 6);
         assert_eq!(h.used, 2);
-        assert_eq!(h.get(0).x, 20.0);
+        assert_eq!(h.entry(0).unwrap().x, 20.0);
         assert_eq!(h.lookup(0.5, 0.0), Some(5));
         assert_eq!(h.lookup(100.0, 0.0), None);
     }

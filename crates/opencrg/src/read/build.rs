@@ -68,8 +68,19 @@ impl Road {
         let warnings = channel_warnings(&header, &path, &cols, &b, nu, u_first, u_inc);
         let LongSections { v, v_first, v_last, v_inc, layout, .. } = sections;
         let nv = v.len();
-        let grid =
-            Grid { nu, nv, z, mean: 0.0, v, v_first, v_last, v_inc, layout, v_table: Vec::new(), last_frac: 0.0 };
+        let grid = Grid {
+            nu,
+            nv,
+            z,
+            mean: 0.0,
+            v,
+            v_first,
+            v_last,
+            v_inc,
+            layout,
+            v_table: Vec::new(),
+            last_frac: nv.saturating_sub(1) as i64 as f64,
+        };
         let line = refline::RefLine::from_records(&header.road, &cols, b, nu, u_first, u_inc)
             .map_err(|m| err("reference line", m))?;
         let mut header = header;
@@ -462,7 +473,7 @@ impl RefLine {
             normals: Vec::new(),
             seg_len: Vec::new(),
             search: Vec::new(),
-            last_frac: 0.0,
+            last_frac: n.saturating_sub(1) as i64 as f64,
             curvature: Vec::new(),
             curv_step: 1,
         })
