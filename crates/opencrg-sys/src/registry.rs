@@ -10,8 +10,8 @@ use crate::owner::{thread_id, OwnedCell};
 use opencrg::{ContactPoint, Road};
 use std::collections::BTreeSet;
 use std::ffi::c_int;
-use std::sync::atomic::{AtomicI32, Ordering};
-use std::sync::{Arc, Mutex, OnceLock};
+use std::sync::atomic::{AtomicI32, AtomicPtr, Ordering};
+use std::sync::{Arc, Mutex};
 
 /// A loaded data set.
 pub struct DataSet {
@@ -23,7 +23,9 @@ static DATASETS: Mutex<Vec<DataSet>> = Mutex::new(Vec::new());
 
 const CHUNK: usize = 256;
 const MAX_CHUNKS: usize = 4096;
-static CHUNKS: [OnceLock<Box<[Slot; CHUNK]>>; MAX_CHUNKS] = [const { OnceLock::new() }; MAX_CHUNKS];
+/// The slots, CHUNK at a time: null until the first contact point of a chunk is made
+/// (under the [`CP_TABLE`] lock), never freed after.
+static CHUNKS: [AtomicPtr<[Slot; CHUNK]>; MAX_CHUNKS] = [const { AtomicPtr::new(std::ptr::null_mut()) }; MAX_CHUNKS];
 
 /// One contact point's place, on its own cache lines so that threads working on
 /// neighbouring contact points do not slow each other.
@@ -51,16 +53,27 @@ struct CpTable {
 static CP_TABLE: Mutex<CpTable> = Mutex::new(CpTable { size: 0, free: BTreeSet::new() });
 
 fn slot(id: usize) -> Option<&'static Slot> {
-    CHUNKS.get(id / CHUNK)?.get().map(|c| &c[id % CHUNK])
+    let chunk = CHUNKS.get(id / CHUNK)?.load(Ordering::Acquire);
+    // SAFETY: a chunk pointer is null or points to a chunk that lives as long as the process.
+    unsafe { chunk.as_ref() }.map(|c| &c[id % CHUNK])
 }
 
+/// The slot of a contact point id as the C API passes it: a negative id becomes an
+/// index past every chunk (one comparison in the hot path instead of two).
+#[inline(always)]
+fn slot_of(id: c_int) -> Option<&'static Slot> {
+    slot(id as u32 as usize)
+}
+
+/// The slot of `id`, its chunk made when missing. Called with the [`CP_TABLE`] lock held.
 fn slot_or_create(id: usize) -> Option<&'static Slot> {
-    let chunk = CHUNKS.get(id / CHUNK)?;
-    let new_chunk = || {
+    let entry = CHUNKS.get(id / CHUNK)?;
+    if entry.load(Ordering::Acquire).is_null() {
         let slots: Box<[Slot]> = (0..CHUNK).map(|_| Slot::new()).collect();
-        slots.try_into().unwrap_or_else(|_| unreachable!("the chunk has CHUNK slots"))
-    };
-    Some(&chunk.get_or_init(new_chunk)[id % CHUNK])
+        let chunk: Box<[Slot; CHUNK]> = slots.try_into().unwrap_or_else(|_| unreachable!("the chunk has CHUNK slots"));
+        entry.store(Box::into_raw(chunk), Ordering::Release);
+    }
+    slot(id)
 }
 
 /// Adds a road; returns its id (one more than the largest id in use).
@@ -135,7 +148,7 @@ pub fn create_cp(dataset: c_int) -> c_int {
 /// Runs `f` on a contact point; `None` for an unknown id.
 #[inline]
 pub fn with_cp<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R) -> Option<R> {
-    let s = slot(usize::try_from(id).ok()?)?;
+    let s = slot_of(id)?;
     s.cp.with_mut(|cp| cp.as_mut().map(f))
 }
 
@@ -144,14 +157,14 @@ pub fn with_cp<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R) -> Option<R
 /// call. `f` must not panic (this runs outside any panic guard).
 #[inline(always)]
 pub fn with_owned_cp<R>(id: c_int, f: impl FnOnce(&ContactPoint) -> R) -> Option<R> {
-    let s = slot(usize::try_from(id).ok()?)?;
+    let s = slot_of(id)?;
     s.cp.with_owned(|cp| cp.as_ref().map(f)).flatten()
 }
 
 /// [`with_owned_cp`] with the contact point to change (its x/y search history).
 #[inline(always)]
 pub fn with_owned_cp_mut<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R) -> Option<R> {
-    let s = slot(usize::try_from(id).ok()?)?;
+    let s = slot_of(id)?;
     s.cp.with_owned_mut(|cp| cp.as_mut().map(f)).flatten()
 }
 

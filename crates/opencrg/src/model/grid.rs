@@ -84,14 +84,22 @@ impl Grid {
     }
 
     /// Asks the processor to start loading the values of the cell whose first corner
-    /// is (`iu`, `iv`), and what a wheel moving along the road reads next: the
-    /// following run of both long sections along u, and the long section beyond the
-    /// cell's nearer side across it (`upper`: the side of `iv + 1`).
+    /// is (`iu`, `iv`). The address is only computed, never read.
     #[inline(always)]
-    pub(crate) fn prefetch_path(&self, iu: usize, iv: usize, upper: bool) {
+    pub(crate) fn prefetch_cell(&self, iu: usize, iv: usize) {
         let p = self.z.as_ptr().wrapping_add(iv.wrapping_mul(self.nu).wrapping_add(iu));
         crate::memory::prefetch(p);
         crate::memory::prefetch(p.wrapping_add(self.nu));
+    }
+
+    /// Asks the processor to start loading what a wheel moving along the road reads
+    /// after the cell whose first corner is (`iu`, `iv`): the following run of both
+    /// long sections along u, and the long section beyond the cell's nearer side across
+    /// it (`upper`: the side of `iv + 1`). Not the cell itself: the lookup reads it at
+    /// once.
+    #[inline(always)]
+    pub(crate) fn prefetch_path(&self, iu: usize, iv: usize, upper: bool) {
+        let p = self.z.as_ptr().wrapping_add(iv.wrapping_mul(self.nu).wrapping_add(iu));
         crate::memory::prefetch(p.wrapping_add(AHEAD));
         crate::memory::prefetch(p.wrapping_add(self.nu + AHEAD));
         crate::memory::prefetch(if upper { p.wrapping_add(2 * self.nu) } else { p.wrapping_sub(self.nu) });
@@ -368,7 +376,9 @@ impl PrefetchHint {
         let (eu, ev) = ((u - u_first) * self.inv_u_inc, (v - g.v_first) * self.inv_v_inc);
         // The upper half of a cell is where twice the estimate truncates to an odd number.
         let upper = crate::memory::rough_index(2.0 * ev) & 1 == 1;
-        g.prefetch_path(crate::memory::rough_index(eu), crate::memory::rough_index(ev), upper);
+        let (iu, iv) = (crate::memory::rough_index(eu), crate::memory::rough_index(ev));
+        g.prefetch_cell(iu, iv);
+        g.prefetch_path(iu, iv, upper);
     }
 }
 

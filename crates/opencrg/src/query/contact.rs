@@ -1,7 +1,7 @@
 //! Contact points: a road, a set of options and a search history.
 
 use crate::error::{Error, Result};
-use crate::eval::{self, EvalOptions, PlainCell};
+use crate::eval::{self, EvalOptions, PlainCell, PlainGrid};
 use crate::road::Road;
 use crate::search::{self, History, DEFAULT_HISTORY};
 use crate::settings::{opt, Settings};
@@ -36,6 +36,8 @@ pub struct ContactPoint {
     road: Arc<Road>,
     options: Settings,
     eval: EvalOptions,
+    /// The common case of the elevation lookup, from `road` and `eval`.
+    plain: PlainGrid,
     history: History,
 }
 
@@ -64,7 +66,8 @@ impl ContactPoint {
         let options = road.options().clone();
         let history = History::new(DEFAULT_HISTORY, DEFAULT_CLOSE * DEFAULT_CLOSE, DEFAULT_FAR * DEFAULT_FAR);
         let eval = EvalOptions::from(&options);
-        ContactPoint { road, options, eval, history }
+        let plain = PlainGrid::new(&road, &eval);
+        ContactPoint { road, options, eval, plain, history }
     }
 
     /// The road evaluated.
@@ -75,6 +78,7 @@ impl ContactPoint {
     /// Evaluates another road (for example the same data after modifiers were
     /// applied); options and history are kept.
     pub fn set_road(&mut self, road: Arc<Road>) {
+        self.plain = PlainGrid::new(&road, &self.eval);
         self.road = road;
     }
 
@@ -88,6 +92,7 @@ impl ContactPoint {
     fn edit_options<R>(&mut self, f: impl FnOnce(&mut Settings) -> R) -> R {
         let r = f(&mut self.options);
         self.eval = EvalOptions::from(&self.options);
+        self.plain = PlainGrid::new(&self.road, &self.eval);
         r
     }
 
@@ -192,7 +197,7 @@ impl ContactPoint {
     fn uv_to_z_fetched(&self, u: f64, v: f64) -> Result<f64> {
         // The common case's lean path first (the same answers; measured 5-10 % faster
         // than the general path's own check for it), the general one for the rest.
-        if let Some(z) = eval::uv_to_z_plain(&self.road, &self.eval, u, v) {
+        if let Some(z) = self.plain.cell(u, v).and_then(|cell| cell.elevation(&self.road)) {
             return Ok(z);
         }
         self.uv_to_z_general(u, v)
@@ -209,18 +214,20 @@ impl ContactPoint {
     /// lookup's lean path handles (see [`PlainCell`]).
     #[inline(always)]
     pub(crate) fn plain_cell(&self, u: f64, v: f64) -> Option<PlainCell> {
-        PlainCell::of(&self.road, &self.eval, u, v)
+        self.plain.cell(u, v)
     }
 
     /// The C library's call-free path of `crgEvaluv2z`: the elevation for the common case
     /// only (inside an evenly spaced grid, no smoothing zone), `None` for every other case,
-    /// where [`ContactPoint::uv_to_z`] answers. Never panics and calls nothing, so the C
-    /// entry point needs no stack frame; not part of the supported Rust API.
+    /// where [`ContactPoint::uv_to_z`] answers. Also asks for the grid a wheel moving on
+    /// will read next. Never panics and calls nothing, so the C entry point needs no
+    /// stack frame; not part of the supported Rust API.
     #[doc(hidden)]
     #[inline(always)]
     pub fn uv_to_z_plain(&self, u: f64, v: f64) -> Option<f64> {
-        self.road.prefetch_cells(u, v);
-        eval::uv_to_z_plain(&self.road, &self.eval, u, v)
+        let cell = self.plain.cell(u, v)?;
+        cell.prefetch_path(&self.road);
+        cell.elevation(&self.road)
     }
 
     /// The C library's call-free path of the x/y calls: (u, v) of (x, y) when the lean
@@ -246,7 +253,7 @@ impl ContactPoint {
     #[doc(hidden)]
     #[inline(always)]
     pub fn z_of_found_plain(&self, u: f64, v: f64) -> Option<f64> {
-        let cell = PlainCell::of(&self.road, &self.eval, u, v)?;
+        let cell = self.plain.cell(u, v)?;
         cell.prefetch_path(&self.road);
         cell.elevation(&self.road)
     }
@@ -317,5 +324,53 @@ impl ContactPoint {
     pub fn xy_to_pk(&mut self, x: f64, y: f64) -> Result<(f64, f64)> {
         let (u, v) = self.xy_to_uv(x, y)?;
         self.uv_to_pk(u, v)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::synth::RoadSpec;
+
+    /// A straight road `length` long with slope, banking and an uneven surface.
+    fn road(length: f64, slope: f64) -> Arc<Road> {
+        let spec = RoadSpec::straight(length, 2.0, 0.5, 0.25)
+            .with_slope(move |_| slope)
+            .with_bank(|u| 0.01 * u)
+            .with_elevation(|u, v| (1.7 * u).sin() + 0.3 * v);
+        Arc::new(spec.build().unwrap())
+    }
+
+    /// How many points over `u` in 0..=length (and v across the road and beyond) the
+    /// common case answers, each checked against the general path bit for bit.
+    fn plain_answers(c: &ContactPoint, length: f64) -> usize {
+        let mut answered = 0;
+        for i in -10..=410 {
+            for j in -12..=12 {
+                let (u, v) = (length * f64::from(i) / 400.0, f64::from(j) / 10.0);
+                if let Some(z) = c.uv_to_z_plain(u, v) {
+                    let general = c.uv_to_z_general(u, v).unwrap();
+                    assert_eq!(z.to_bits(), general.to_bits(), "at ({u}, {v})");
+                    answered += 1;
+                }
+            }
+        }
+        answered
+    }
+
+    /// The common case reads a copy of the road's geometry and the options: it must
+    /// follow both when they change.
+    #[test]
+    fn the_common_case_follows_the_road_and_the_options() {
+        let mut c = ContactPoint::new(road(10.0, 0.1));
+        // Inside: u over 401 of the 421 steps, v over 21 of the 25.
+        assert_eq!(plain_answers(&c, 10.0), 401 * 21);
+        assert_eq!(c.uv_to_z_plain(15.0, 0.0), None, "beyond the first road");
+        c.set_road(road(20.0, -0.2));
+        assert_eq!(plain_answers(&c, 20.0), 401 * 21);
+        c.set_option_double(opt::SMOOTH_U_BEGIN, 2.0).unwrap();
+        assert_eq!(plain_answers(&c, 20.0), 0, "a smoothing zone takes the general path");
+        c.remove_option(opt::SMOOTH_U_BEGIN);
+        assert_eq!(plain_answers(&c, 20.0), 401 * 21);
     }
 }

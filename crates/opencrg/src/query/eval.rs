@@ -259,6 +259,22 @@ fn clamp_index_to(frac: &mut f64, n: usize, last: f64) -> usize {
     }
 }
 
+/// [`clamp_index_to`] for a fraction that is not negative (nor NaN): the same index and
+/// fraction without the lower clamp.
+#[inline(always)]
+fn upper_clamped_index(frac: &mut f64, n: usize, last: f64) -> usize {
+    if *frac < last {
+        // SAFETY: 0 <= frac < n - 1 here (the caller's promise and the test): finite and
+        // within i64.
+        let i = unsafe { frac.to_int_unchecked::<i64>() };
+        *frac -= i as f64;
+        i as usize
+    } else {
+        *frac = 1.0;
+        n.saturating_sub(2)
+    }
+}
+
 /// The surface at interval (iu, fu) x (iv, fv): grid value (when `with_values`),
 /// reference line z, and banking times `v_bank`; the reference line terms take `fu`
 /// clamped to the cell (`FU_IN_CELL`: the caller knows it lies there). Never panics:
@@ -342,6 +358,64 @@ fn v_cell(g: &crate::grid::Grid, v: f64) -> (usize, f64) {
     (clamp_index_to(&mut fv, g.nv, g.last_frac), fv)
 }
 
+/// What the common case of an elevation lookup (inside an evenly spaced grid, no
+/// smoothing zone) reads to find its cell, copied out of the road and the options into
+/// the contact point: a lookup then finds its cell in one place next to the contact
+/// point's other state instead of through the road. Where the common case never applies
+/// (an uneven grid, a smoothing zone) its bounds are NaN: every comparison with them
+/// fails, so no point lies inside.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct PlainGrid {
+    u_first: f64,
+    u_last: f64,
+    u_inc: f64,
+    u_last_frac: f64,
+    nu: usize,
+    v_first: f64,
+    v_last: f64,
+    v_inc: f64,
+    v_last_frac: f64,
+    nv: usize,
+}
+
+impl PlainGrid {
+    /// The common case of `road` evaluated with `options`.
+    pub(crate) fn new(road: &Road, options: &EvalOptions) -> Self {
+        let (l, g) = (&road.line, &road.grid);
+        // Positive increments make every fraction of a point inside non-negative, which
+        // `upper_clamped_index` relies on.
+        let applies = options.no_smoothing && g.layout == VLayout::Indexed && l.u_inc > 0.0 && g.v_inc > 0.0;
+        let bound = |x: f64| if applies { x } else { f64::NAN };
+        PlainGrid {
+            u_first: bound(l.u_first),
+            u_last: bound(l.u_last),
+            u_inc: l.u_inc,
+            u_last_frac: l.last_frac,
+            nu: l.n,
+            v_first: bound(g.v_first),
+            v_last: bound(g.v_last),
+            v_inc: g.v_inc,
+            v_last_frac: g.last_frac,
+            nv: g.nv,
+        }
+    }
+
+    /// The cell of (u, v) when the point is of the common case; `None` otherwise (also
+    /// for NaN). The same cell [`uv_to_z`] finds for it.
+    #[inline(always)]
+    pub(crate) fn cell(&self, u: f64, v: f64) -> Option<PlainCell> {
+        if !(u >= self.u_first && u <= self.u_last && v >= self.v_first && v <= self.v_last) {
+            return None;
+        }
+        // Inside, u - u_first and v - v_first are not negative, nor are the fractions.
+        let mut fu = (u - self.u_first) / self.u_inc;
+        let iu = upper_clamped_index(&mut fu, self.nu, self.u_last_frac);
+        let mut fv = (v - self.v_first) / self.v_inc;
+        let iv = upper_clamped_index(&mut fv, self.nv, self.v_last_frac);
+        Some(PlainCell { iu, fu, iv, fv, v })
+    }
+}
+
 /// Where a point of the common case (inside an evenly spaced grid, no smoothing zone)
 /// lies: its cell's interval indices and fractions, and its v (for the banking).
 #[derive(Debug, Clone, Copy, Default)]
@@ -354,18 +428,6 @@ pub(crate) struct PlainCell {
 }
 
 impl PlainCell {
-    /// The cell of (u, v) when the point is of the common case; `None` otherwise.
-    #[inline(always)]
-    pub(crate) fn of(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<PlainCell> {
-        let g = &road.grid;
-        if !(plain_inside(road, options, u, v) && g.layout == VLayout::Indexed) {
-            return None;
-        }
-        let (iu, fu) = u_cell(&road.line, u);
-        let (iv, fv) = v_cell(g, v);
-        Some(PlainCell { iu, fu, iv, fv, v })
-    }
-
     /// Asks the processor to start loading the cell's grid values into the second-level
     /// cache, for an evaluation many others later (the batch's blocks ahead).
     #[inline(always)]
@@ -385,14 +447,6 @@ impl PlainCell {
     pub(crate) fn elevation(&self, road: &Road) -> Option<f64> {
         surface::<true>(road, self.iu, self.fu, self.iv, self.fv, self.v, true, true)
     }
-}
-
-/// Elevation at (u, v) for the common case only: inside an evenly spaced grid, no
-/// smoothing zone; `None` for every other case. Same answers as [`uv_to_z`], and it
-/// never panics, so a C entry point may call it before setting up its panic guard.
-#[inline(always)]
-pub(crate) fn uv_to_z_plain(road: &Road, options: &EvalOptions, u: f64, v: f64) -> Option<f64> {
-    PlainCell::of(road, options, u, v)?.elevation(road)
 }
 
 /// Elevation at (u, v) with the given options; `None` when a border mode refuses.
