@@ -16,14 +16,8 @@ threads=${THREADS:-$(nproc)}
 repeat=${REPEAT:-3}
 out=$(mktemp -d)
 
-cargo build --release -q -p opencrg-capi
-cargo run --release -q -p opencrg --example make_bench_roads -- "$roads" >/dev/null
-cc -O2 -Iinclude bench/crg_bench.c target/release/libopencrg.a -lm -lpthread -ldl -o "$out/bench_opencrg"
-libs=(opencrg)
-if [ $# -ge 2 ]; then
-    cc -O2 -I"$2" bench/crg_bench.c "$1" -lm -lpthread -o "$out/bench_other"
-    libs+=(other)
-fi
+source bench/build_programs.sh
+build_programs bench/crg_bench.c bench "$@"
 
 # best (lowest for times, highest otherwise) of several values
 best() { sort -g | if [ "$1" = low ]; then head -n1; else tail -n1; fi; }

@@ -21,14 +21,8 @@ steps=${STEPS:-50000}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
-cargo build --release -q -p opencrg-capi
-cargo run --release -q -p opencrg --example make_bench_roads -- "$roads" >/dev/null
-cc -O2 -Iinclude bench/vehicle_bench.c target/release/libopencrg.a -lm -lpthread -ldl -o "$out/vehicle_opencrg"
-libs=(opencrg)
-if [ $# -ge 2 ]; then
-    cc -O2 -I"$2" bench/vehicle_bench.c "$1" -lm -lpthread -o "$out/vehicle_other"
-    libs+=(other)
-fi
+source bench/build_programs.sh
+build_programs bench/vehicle_bench.c vehicle "$@"
 files=${ROAD_FILES:-"track_500m_krbi winding_sloped_banked_2km_krbi"}
 # One call at a time (its cases on one thread, then on 8 and 16), the libraries in turn:
 # the two runs of a pair are seconds apart, so a slow spell of a shared machine tends to

@@ -853,7 +853,7 @@ pub unsafe extern "C" fn crgEvalxy2z(cpId: c_int, x: f64, y: f64, z: *mut f64) -
     // elevation needs the general way continues from the (u, v) it found.
     match registry::with_owned_cp_mut(cpId, |cp| {
         let (u, v) = cp.xy_to_uv_lean(x, y)?;
-        Some(cp.z_of_found_plain(u, v).ok_or((u, v)))
+        Some(cp.uv_to_z_plain(u, v).ok_or((u, v)))
     }) {
         Some(Some(Ok(value))) => {
             *z = value;

@@ -217,9 +217,10 @@ impl ContactPoint {
         self.plain.cell(u, v)
     }
 
-    /// The C library's call-free path of `crgEvaluv2z`: the elevation for the common case
-    /// only (inside an evenly spaced grid, no smoothing zone), `None` for every other case,
-    /// where [`ContactPoint::uv_to_z`] answers. Also asks for the grid a wheel moving on
+    /// The C library's call-free path of `crgEvaluv2z`, and of `crgEvalxy2z` after its
+    /// search: the elevation for the common case only (inside an evenly spaced grid, no
+    /// smoothing zone), `None` for every other case, where [`ContactPoint::uv_to_z`] (or
+    /// [`ContactPoint::z_of_found`]) answers. Also asks for the grid a wheel moving on
     /// will read next. Never panics and calls nothing, so the C entry point needs no
     /// stack frame; not part of the supported Rust API.
     #[doc(hidden)]
@@ -243,19 +244,6 @@ impl ContactPoint {
         }
         let road = &*self.road;
         search::xy_to_uv_lean(&road.line, self.eval.closed_search, &mut self.history, x, y)
-    }
-
-    /// The C library's call-free path of `crgEvalxy2z` after a search: the elevation
-    /// [`ContactPoint::xy_to_z`] gives at the (u, v) its search found, for the common
-    /// case (see [`ContactPoint::uv_to_z_plain`]); `None` for every other case, where
-    /// [`ContactPoint::z_of_found`] answers. Also asks for the grid a wheel moving on
-    /// will read next. Never panics; not part of the supported Rust API.
-    #[doc(hidden)]
-    #[inline(always)]
-    pub fn z_of_found_plain(&self, u: f64, v: f64) -> Option<f64> {
-        let cell = self.plain.cell(u, v)?;
-        cell.prefetch_path(&self.road);
-        cell.elevation(&self.road)
     }
 
     /// Heading and curvature at (u, v).
@@ -314,7 +302,7 @@ impl ContactPoint {
     #[doc(hidden)]
     #[inline]
     pub fn z_of_found(&self, u: f64, v: f64) -> Result<f64> {
-        match self.z_of_found_plain(u, v) {
+        match self.uv_to_z_plain(u, v) {
             Some(z) => Ok(z),
             None => elevation(eval::uv_to_z(&self.road, &self.eval, u, v)),
         }

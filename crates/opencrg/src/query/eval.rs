@@ -246,23 +246,14 @@ fn clamp_index_to(frac: &mut f64, n: usize, last: f64) -> usize {
     if *frac < 0.0 {
         *frac = 0.0;
     }
-    // Indices stay far below 2^63, so i64 conversions are exact. The test is written
-    // so that NaN takes the clamping branch.
-    if !(*frac < last) {
-        *frac = 1.0;
-        n.saturating_sub(2)
-    } else {
-        // SAFETY: 0 <= frac < n - 1 here: finite and within i64.
-        let i = unsafe { frac.to_int_unchecked::<i64>() };
-        *frac -= i as f64;
-        i as usize
-    }
+    upper_clamped_index(frac, n, last)
 }
 
-/// [`clamp_index_to`] for a fraction that is not negative (nor NaN): the same index and
-/// fraction without the lower clamp.
+/// [`clamp_index_to`] for a fraction that is not negative: the same index and fraction
+/// without the lower clamp. NaN takes the clamping branch.
 #[inline(always)]
 fn upper_clamped_index(frac: &mut f64, n: usize, last: f64) -> usize {
+    // Indices stay far below 2^63, so i64 conversions are exact.
     if *frac < last {
         // SAFETY: 0 <= frac < n - 1 here (the caller's promise and the test): finite and
         // within i64.
