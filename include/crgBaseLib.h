@@ -789,8 +789,6 @@ int crgDataSetGetGridZ(int dataSetId, float *z, int nU, int nV);
  */
 int crgDataSetGetRefLine(int dataSetId, double *u, double *x, double *y, double *phi, double *z, int nU);
 
-extern void crgMsgPrint(int level, const char *format, ...);
-
 #ifdef __cplusplus
 }  // extern "C"
 #endif  // __cplusplus

@@ -1,24 +1,66 @@
-//! Gives the shared library its versioned soname (`libopencrg.so.MAJOR`) and its export
-//! list, with a link of that name beside the built library, so programs linked in the
-//! build tree find it at run time.
+//! What the platforms need beside the libraries themselves (rustc exports the API's
+//! functions, and only those, everywhere):
+//! - Linux: the soname `libopencrg.so.MAJOR`, with a link of that name beside the built
+//!   library, so programs linked in the build tree find it at run time;
+//! - Windows: a module-definition file `opencrg.def` of the functions `crgBaseLib.h`
+//!   declares, made from the header and written beside the DLL, from which the import
+//!   libraries for MinGW and MSVC are made (see `packaging/`).
+use std::path::{Path, PathBuf};
+
 fn main() {
-    if std::env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("linux") {
-        let major = std::env::var("CARGO_PKG_VERSION_MAJOR").unwrap_or_else(|_| "2".into());
-        let soname = format!("libopencrg.so.{major}");
-        println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,{soname}");
-        // The variadic crgMsgPrint lives in opencrg-sys's C shim; rustc exports only Rust symbols.
-        let map = std::path::Path::new(&std::env::var("CARGO_MANIFEST_DIR").unwrap()).join("exports.map");
-        println!("cargo:rerun-if-changed=exports.map");
-        println!("cargo:rustc-cdylib-link-arg=-Wl,--version-script={}", map.display());
-        // OUT_DIR is <profile dir>/build/<crate>-<hash>/out; the library lands in <profile dir>.
-        if let Some(profile_dir) = std::env::var_os("OUT_DIR")
-            .map(std::path::PathBuf::from)
-            .and_then(|o| o.ancestors().nth(3).map(|p| p.to_path_buf()))
-        {
-            let link = profile_dir.join(&soname);
-            if std::fs::symlink_metadata(&link).is_err() {
-                let _ = std::os::unix::fs::symlink("libopencrg.so", &link);
-            }
+    let manifest = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").unwrap());
+    // OUT_DIR is <profile dir>/build/<crate>-<hash>/out; the library lands in <profile dir>.
+    let profile_dir =
+        std::env::var_os("OUT_DIR").map(PathBuf::from).and_then(|o| o.ancestors().nth(3).map(Path::to_path_buf));
+    match std::env::var("CARGO_CFG_TARGET_OS").as_deref() {
+        Ok("linux") => linux(profile_dir),
+        Ok("windows") => windows(&manifest, profile_dir),
+        _ => {}
+    }
+}
+
+fn linux(profile_dir: Option<PathBuf>) {
+    let major = std::env::var("CARGO_PKG_VERSION_MAJOR").unwrap_or_else(|_| "2".into());
+    let soname = format!("libopencrg.so.{major}");
+    println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,{soname}");
+    #[cfg(unix)]
+    if let Some(dir) = profile_dir {
+        let link = dir.join(&soname);
+        if std::fs::symlink_metadata(&link).is_err() {
+            let _ = std::os::unix::fs::symlink("libopencrg.so", &link);
         }
     }
+    #[cfg(not(unix))]
+    let _ = profile_dir;
+}
+
+fn windows(manifest: &Path, profile_dir: Option<PathBuf>) {
+    let header = manifest.join("../../include/crgBaseLib.h");
+    println!("cargo:rerun-if-changed={}", header.display());
+    let text = std::fs::read_to_string(&header).unwrap_or_else(|e| panic!("{}: {e}", header.display()));
+    let mut names: Vec<&str> = text.lines().filter_map(declared_function).collect();
+    names.sort_unstable();
+    names.dedup();
+    assert!(names.len() > 50, "{}: only {} function declarations found", header.display(), names.len());
+    let mut def = String::from("; The functions of crgBaseLib.h, made from the header by crates/opencrg-capi/build.rs.\nLIBRARY opencrg.dll\nEXPORTS\n");
+    for name in names {
+        def.push_str("    ");
+        def.push_str(name);
+        def.push('\n');
+    }
+    if let Some(dir) = profile_dir {
+        std::fs::write(dir.join("opencrg.def"), &def).unwrap();
+    }
+}
+
+/// The name of the function a header line declares at its start (`int crgCheck(int
+/// dataSetId);`): a return type, the name starting with `crg`, an opening parenthesis.
+fn declared_function(line: &str) -> Option<&str> {
+    if !line.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_') {
+        return None;
+    }
+    let open = line.find('(')?;
+    let head = line[..open].trim_end();
+    let name = &head[head.rfind([' ', '*'])? + 1..];
+    (name.starts_with("crg") && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')).then_some(name)
 }

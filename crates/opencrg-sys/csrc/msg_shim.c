@@ -1,5 +1,6 @@
 /*
- * crgMsgPrint is variadic, which stable Rust cannot define. This shim formats the
+ * crgMsgPrint is variadic, which stable Rust cannot define: the exported symbol is a
+ * Rust entry (src/msg_entry.rs) that jumps to opencrg_msg_print here. This shim formats the
  * message and hands the text to the Rust side (src/msg.rs), which either passes it to
  * the application's callback or has it printed here, on stderr, with the level's name
  * in front, as the reference library prints its messages.
@@ -13,7 +14,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+/* A DLL exports only what its .def file lists; ELF libraries hide the hooks this way. */
+#if defined(_WIN32)
+#define HIDDEN
+#else
 #define HIDDEN __attribute__((visibility("hidden")))
+#endif
 
 /* Is a message of this level wanted at all? */
 HIDDEN int (*opencrg_msg_wanted_hook)(int level) = NULL;
@@ -33,7 +39,7 @@ static const char *level_name(int level)
     }
 }
 
-void crgMsgPrint(int level, const char *format, ...)
+HIDDEN void opencrg_msg_print(int level, const char *format, ...)
 {
     char small[1024];
     char *text = small;

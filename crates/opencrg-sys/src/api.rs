@@ -6,6 +6,7 @@
 #![allow(non_snake_case)] // the C API's parameter names
 
 use crate::alloc;
+use crate::c_path;
 use crate::msg;
 use crate::panic::guard;
 use crate::profile;
@@ -97,8 +98,7 @@ pub unsafe extern "C" fn crgLoaderReadFile(filename: *const c_char) -> c_int {
             msg::fatal("crgLoaderReadFile: no file name given");
             return 0;
         };
-        let bytes = filename.to_bytes();
-        let path = std::path::PathBuf::from(<std::ffi::OsStr as std::os::unix::ffi::OsStrExt>::from_bytes(bytes));
+        let path = c_path::path_of(filename);
         let compat = match profile::compat() {
             Ok(compat) => compat,
             Err(e) => {

@@ -3,10 +3,12 @@
 //! The contact points' owner path (see `registry`) marks a slot busy with a plain
 //! store and then reads whether its ownership still stands; a processor may let
 //! that read pass the store. The rare thread that revokes an ownership makes up
-//! for it by running a barrier on every thread at once, with Linux's
-//! `membarrier(MEMBARRIER_CMD_PRIVATE_EXPEDITED)`. Where that is not available
-//! (another system, an old kernel, a sandbox refusing the call) no thread is ever
-//! made owner and every access takes the lock.
+//! for it by running a barrier on every thread at once: Linux's
+//! `membarrier(MEMBARRIER_CMD_PRIVATE_EXPEDITED)` (on x86-64 and Arm alike: the kernel
+//! runs a full barrier on every processor running a thread of the process), Windows'
+//! `FlushProcessWriteBuffers` (the same guarantee, documented for exactly this use).
+//! Where neither is available (another system, an old kernel, a sandbox refusing the
+//! call) no thread is ever made owner and every access takes the lock.
 
 use std::sync::atomic::{fence, Ordering};
 use std::sync::OnceLock;
@@ -32,7 +34,25 @@ mod sys {
     }
 }
 
-#[cfg(not(target_os = "linux"))]
+#[cfg(windows)]
+mod sys {
+    #[link(name = "kernel32")]
+    extern "system" {
+        fn FlushProcessWriteBuffers();
+    }
+
+    pub fn register() -> bool {
+        true
+    }
+
+    pub fn run() -> bool {
+        // SAFETY: no arguments, no preconditions; available since Windows Vista.
+        unsafe { FlushProcessWriteBuffers() };
+        true
+    }
+}
+
+#[cfg(not(any(target_os = "linux", windows)))]
 mod sys {
     pub fn register() -> bool {
         false

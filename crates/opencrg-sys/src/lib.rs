@@ -7,17 +7,22 @@
 mod alloc;
 mod api;
 mod barrier;
+mod c_path;
 mod constants;
 mod extensions;
 mod lock;
 mod msg;
+mod msg_entry;
+mod on_load;
 mod owner;
 mod panic;
 mod profile;
 mod ptr;
 mod registry;
 mod report;
+mod thread_id;
 
 pub use api::*;
 pub use constants::*;
 pub use extensions::*;
+pub use msg_entry::crgMsgPrint;

@@ -4,6 +4,7 @@
 //! way: formatted in the C shim, routed here.
 
 use crate::lock::lock;
+use crate::msg_entry::opencrg_msg_print;
 use std::ffi::{c_char, c_int, CString};
 use std::sync::atomic::{AtomicI32, Ordering};
 use std::sync::Mutex;
@@ -25,10 +26,6 @@ pub(crate) type Callback = unsafe extern "C" fn(c_int, *mut c_char) -> c_int;
 static LEVEL: AtomicI32 = AtomicI32::new(NOTICE);
 static WARN_BUDGET: AtomicI32 = AtomicI32::new(-1);
 static CALLBACK: Mutex<Option<Callback>> = Mutex::new(None);
-
-extern "C" {
-    fn crgMsgPrint(level: c_int, format: *const c_char, ...);
-}
 
 pub fn set_level(level: c_int) {
     if (NONE..=DEBUG).contains(&level) {
@@ -59,7 +56,7 @@ pub fn send(level: c_int, text: &str) {
     }
     let text = CString::new(format!("{text}\n").replace('\0', " ")).unwrap_or_default();
     // SAFETY: "%s" with one NUL-terminated string argument.
-    unsafe { crgMsgPrint(level, c"%s".as_ptr(), text.as_ptr()) }
+    unsafe { opencrg_msg_print(level, c"%s".as_ptr(), text.as_ptr()) }
 }
 
 /// A fatal message.
@@ -107,9 +104,8 @@ extern "C" {
     static mut opencrg_msg_route_hook: RouteHook;
 }
 
-/// Hands the shim its two hooks when the library is loaded (before `main`, or before
-/// the loading program's `dlopen` returns).
-extern "C" fn install_hooks() {
+/// Hands the shim its two hooks when the library is loaded (see `on_load`).
+pub(crate) extern "C" fn install_hooks() {
     // SAFETY: runs once, from the loader, before any thread of the program can call
     // into the library; the statics are plain function pointers in the shim.
     unsafe {
@@ -117,7 +113,3 @@ extern "C" fn install_hooks() {
         *std::ptr::addr_of_mut!(opencrg_msg_route_hook) = Some(route);
     }
 }
-
-#[used]
-#[link_section = ".init_array"]
-static INSTALL_HOOKS: extern "C" fn() = install_hooks;

@@ -11,6 +11,7 @@
 //! of the cell. Either the owner then sees the revocation before it touches the value, or
 //! the revoker sees the owner's busy mark and waits.
 
+use crate::thread_id::thread_id;
 use std::cell::UnsafeCell;
 use std::ops::{Deref, DerefMut};
 use std::sync::atomic::{compiler_fence, AtomicBool, AtomicUsize, Ordering};
@@ -45,27 +46,6 @@ fn back_off(spins: &mut u32) {
         std::hint::spin_loop();
     } else {
         std::thread::yield_now();
-    }
-}
-
-/// This thread's id: non-zero and unique among running threads. An id is reused only
-/// after its thread ended, and an ended thread is in no cell.
-#[inline]
-pub(crate) fn thread_id() -> usize {
-    #[cfg(all(target_arch = "x86_64", target_os = "linux"))]
-    {
-        // The thread pointer's self-reference (what pthread_self returns with glibc
-        // and musl), read without a call.
-        let id: usize;
-        // SAFETY: on x86_64 Linux fs:0 always holds the thread control block's own
-        // address; reading it has no side effects.
-        unsafe { std::arch::asm!("mov {}, fs:0", out(reg) id, options(nostack, readonly, preserves_flags, pure)) };
-        id
-    }
-    #[cfg(not(all(target_arch = "x86_64", target_os = "linux")))]
-    {
-        // SAFETY: pthread_self has no preconditions.
-        unsafe { libc::pthread_self() as usize }
     }
 }
 

@@ -6,7 +6,8 @@
 //! on a shared lock.
 
 use crate::lock::lock;
-use crate::owner::{thread_id, OwnedCell};
+use crate::owner::OwnedCell;
+use crate::thread_id::thread_id;
 use opencrg::{ContactPoint, Road};
 use std::collections::BTreeSet;
 use std::ffi::c_int;

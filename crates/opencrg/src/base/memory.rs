@@ -1,6 +1,6 @@
 //! The memory of the large arrays evaluation reads: how the elevation grid is
-//! allocated, and how lookups ask for it ahead of time (the platform differences of
-//! both live here).
+//! allocated, how lookups ask for it ahead of time, and how the pages of a mapped file
+//! are given back once read (the platform differences of all three live here).
 //!
 //! Random queries over a grid of tens of megabytes miss the processor's address
 //! translation cache on nearly every call when the grid sits in 4 KiB pages; in
@@ -45,8 +45,23 @@ fn advise_huge_pages(start: *const u8, len: usize) {
 #[cfg(not(target_os = "linux"))]
 fn advise_huge_pages(_start: *const u8, _len: usize) {}
 
-/// The cache a prefetch fills, as x86 numbers it: the first level (`_MM_HINT_T0`) or
-/// the second (`_MM_HINT_T1`).
+/// Lets the system drop the pages of `map` in `start..start + len` (page aligned) from
+/// this process's memory: they have been read and will not be read again. Their file
+/// stays in the system's cache; the mapping is read-only, so nothing can be lost.
+/// Without such advice (Windows) the pages stay until the mapping is closed at the end
+/// of the load.
+#[cfg(unix)]
+pub(crate) fn release_mapped(map: &memmap2::Mmap, start: usize, len: usize) {
+    // SAFETY: DontNeed on a read-only shared file mapping only drops resident pages;
+    // later reads fault them in again from the file.
+    let _ = unsafe { map.unchecked_advise_range(memmap2::UncheckedAdvice::DontNeed, start, len) };
+}
+
+#[cfg(not(unix))]
+pub(crate) fn release_mapped(_map: &memmap2::Mmap, _start: usize, _len: usize) {}
+
+/// The cache a prefetch fills, as x86 numbers it: the first level (`_MM_HINT_T0`, on
+/// Arm `PLDL1KEEP`) or the second (`_MM_HINT_T1`, `PLDL2KEEP`).
 const FIRST_LEVEL: i32 = 3;
 const SECOND_LEVEL: i32 = 2;
 
@@ -60,7 +75,16 @@ fn prefetch_into<const LEVEL: i32, T>(p: *const T) {
     unsafe {
         std::arch::x86_64::_mm_prefetch::<LEVEL>(p.cast())
     };
-    #[cfg(not(target_arch = "x86_64"))]
+    #[cfg(target_arch = "aarch64")]
+    // SAFETY: as above; `prfm` is a hint that never faults.
+    unsafe {
+        if LEVEL == FIRST_LEVEL {
+            std::arch::asm!("prfm pldl1keep, [{0}]", in(reg) p, options(nostack, readonly, preserves_flags));
+        } else {
+            std::arch::asm!("prfm pldl2keep, [{0}]", in(reg) p, options(nostack, readonly, preserves_flags));
+        }
+    };
+    #[cfg(not(any(target_arch = "x86_64", target_arch = "aarch64")))]
     let _ = p;
 }
 

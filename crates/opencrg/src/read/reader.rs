@@ -37,17 +37,15 @@ impl std::ops::Deref for FileBytes {
 }
 
 impl FileBytes {
-    /// Lets the kernel drop the mapped pages in `start..end` from this process's
-    /// memory: they have been decoded and will not be read again. The file's pages
-    /// stay in the page cache; the mapping is read-only, so nothing can be lost.
+    /// Lets the system drop the mapped pages in `start..end` from this process's
+    /// memory: they have been decoded and will not be read again (see
+    /// [`crate::memory::release_mapped`]).
     pub(crate) fn release(&self, start: usize, end: usize) {
         const PAGE: usize = 4096;
         if let FileBytes::Mapped(map) = self {
             let (first, last) = (start.div_ceil(PAGE) * PAGE, end / PAGE * PAGE);
             if last > first {
-                // SAFETY: DontNeed on a read-only shared file mapping only drops
-                // resident pages; later reads fault them in again from the file.
-                let _ = unsafe { map.unchecked_advise_range(memmap2::UncheckedAdvice::DontNeed, first, last - first) };
+                crate::memory::release_mapped(map, first, last - first);
             }
         }
     }
@@ -122,10 +120,12 @@ impl Loader {
 
 fn open(path: &Path) -> Result<FileBytes> {
     let io = |source| Error::Io { path: path.to_path_buf(), source };
-    let file = std::fs::File::open(path).map_err(io)?;
+    let directory = || Error::format(path, Location::File, "file", "is a directory, not a CRG file");
+    // (Windows refuses to open a directory as a file: the reason is told all the same.)
+    let file = std::fs::File::open(path).map_err(|e| if path.is_dir() { directory() } else { io(e) })?;
     let meta = file.metadata().map_err(io)?;
     if meta.is_dir() {
-        return Err(Error::format(path, Location::File, "file", "is a directory, not a CRG file"));
+        return Err(directory());
     }
     if meta.len() == 0 {
         return Err(Error::format(path, Location::File, "file", "is empty"));
