@@ -3,7 +3,9 @@
 # integration, header freshness, the opencrg command, doctests incl. the README's), then
 # through CTest the C tests (also under the sanitizers and valgrind), the header and
 # symbol checks, the CMake consumer project, the conformance suite in both behaviour
-# profiles (.so and .a) and the differential tester; last the Python package: its
+# profiles (.so and .a) and the differential tester; the same C tests and conformance
+# suite on Windows (MinGW-w64 build under wine, with the zip's CMake package and MSVC
+# import library) and on 64-bit Arm Linux (under qemu); last the Python package: its
 # manylinux2014 wheel built with maturin and zig, installed into a fresh virtual
 # environment without cargo, and its pytest suite (pickling, multiprocessing, Dask).
 set -euo pipefail
@@ -16,6 +18,8 @@ cargo build --release -p opencrg-capi -p opencrg-cli
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"
 ctest --test-dir build --output-on-failure -j"$(nproc)"
+c-tests/cross/run.sh windows
+c-tests/cross/run.sh arm
 # The Python wheel as users get it: manylinux2014 (glibc 2.17), abi3, linked by zig.
 python3 -m venv target/python-build
 target/python-build/bin/pip install -q --upgrade pip

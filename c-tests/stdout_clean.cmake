@@ -1,7 +1,11 @@
 # Runs test_stdout_clean and checks where the text went: the program's lines alone on
 # stdout, the library's messages (with their level names) on stderr.
-# usage: cmake -DPROGRAM=test_stdout_clean -DROAD=road.crg -P stdout_clean.cmake
-execute_process(COMMAND "${PROGRAM}" "${ROAD}" OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
+# usage: cmake -DPROGRAM=test_stdout_clean -DROAD=road.crg [-DRUNNER=wine] -P stdout_clean.cmake
+# (RUNNER: the program that runs PROGRAM, for another platform's build; line ends of
+# Windows' text mode are read as plain ones.)
+execute_process(COMMAND ${RUNNER} "${PROGRAM}" "${ROAD}" OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
+string(REPLACE "\r" "" out "${out}")
+string(REPLACE "\r" "" err "${err}")
 if(NOT rc EQUAL 0)
     message(FATAL_ERROR "${PROGRAM} exited with ${rc}")
 endif()

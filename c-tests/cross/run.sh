@@ -1,0 +1,159 @@
+#!/usr/bin/env bash
+# The C API's tests on another platform: the library built with Rust's cross target, the
+# tests with the platform's C compiler, run under its emulator.
+#
+#   c-tests/cross/run.sh windows   # x86_64-pc-windows-gnu, MinGW-w64, wine; the zip
+#   c-tests/cross/run.sh arm       # aarch64-unknown-linux-gnu, Debian's cross gcc, qemu
+#
+# Checks: the exported functions against the header; the C tests (API with the shared
+# and the static library, threads, extensions, private header, compatibility profile,
+# messages on stderr); the conformance suite in both behaviour profiles (../shared);
+# the command's `info` on the project's demo road; for Windows also the zip's CMake
+# package with MinGW and the MSVC import library with lld-link.
+set -euo pipefail
+# Nothing here reads its input; an emulated program that would waits for nothing.
+exec </dev/null
+root=$(cd "$(dirname "$0")/../.." && pwd)
+platform=${1:?usage: run.sh windows|arm}
+cd "$root"
+road="$root/examples/data/demo_road.crg"
+version=$(sed -n 's/^version = "\([0-9.]*\)"$/\1/p' Cargo.toml | head -1)
+work="$root/target/cross-tests/$platform"
+rm -rf "$work"
+mkdir -p "$work"
+strict=(-O2 -Wall -Wextra -Werror -pedantic)
+passed=0
+ok() {
+    passed=$((passed + 1))
+    echo "cross $platform: ok: $*"
+}
+need() {
+    for tool in "$@"; do
+        command -v "$tool" >/dev/null || { echo "cross $platform: $tool not found (.ci/run installs it)" >&2; exit 1; }
+    done
+}
+
+case "$platform" in
+windows)
+    need x86_64-w64-mingw32-gcc x86_64-w64-mingw32-objdump wine clang lld-link cmake
+    export WINEDEBUG=-all WINEPREFIX="${WINEPREFIX:-$root/target/wineprefix}"
+    # A prefix made once, and a server kept up between the many short runs.
+    # Its processes get no descriptor of this script's: they outlive single runs.
+    [ -d "$WINEPREFIX" ] || wineboot -i </dev/null >/dev/null 2>&1
+    wineserver -p 60 </dev/null >/dev/null 2>&1 || true
+    trap 'wineserver -k </dev/null >/dev/null 2>&1 || true' EXIT
+    packaging/windows-zip.sh >/dev/null
+    tree="$root/target/dist/opencrg-$version-windows-x86_64"
+    cc=x86_64-w64-mingw32-gcc
+    run=(timeout 600 wine)
+    shared="$tree/bin/opencrg.dll"
+    link_shared=("$tree/lib/libopencrg.dll.a")
+    link_static=("$tree/lib/libopencrg.a" -lkernel32 -lntdll -luserenv -lws2_32 -ldbghelp)
+    # winpthreads linked in, so the test programs need no DLL of MinGW's beside them.
+    link_threads=(-static -lpthread)
+    exe=.exe
+    # The command beside a stand-in for a system DLL wine 8 lacks (see bcryptprimitives.c).
+    mkdir -p "$work/cli"
+    cp "$tree/bin/opencrg.exe" "$work/cli/"
+    "$cc" "${strict[@]}" -shared c-tests/cross/bcryptprimitives.c -ladvapi32 -o "$work/cli/bcryptprimitives.dll"
+    tool=("${run[@]}" "$work/cli/opencrg.exe")
+    cp "$shared" "$work/"
+    exported=$(x86_64-w64-mingw32-objdump -p "$shared" | sed -n '/\[Ordinal\/Name Pointer\] Table/,/^$/p' |
+        sed -n 's/^\s*\[ *[0-9]*\] \([A-Za-z_0-9]*\)$/\1/p' | sort -u)
+    ;;
+arm)
+    need aarch64-linux-gnu-gcc aarch64-linux-gnu-nm qemu-aarch64
+    target=aarch64-unknown-linux-gnu
+    cargo build --release --target "$target" -p opencrg-capi -p opencrg-cli
+    built="$root/target/$target/release"
+    cc=aarch64-linux-gnu-gcc
+    run=(timeout 600 qemu-aarch64 -L /usr/aarch64-linux-gnu)
+    shared="$built/libopencrg.so"
+    link_shared=("$shared" "-Wl,-rpath,$built")
+    link_static=("$built/libopencrg.a" -lpthread -ldl)
+    link_threads=(-lpthread)
+    exe=
+    tool=("${run[@]}" "$built/opencrg")
+    exported=$(aarch64-linux-gnu-nm -D --defined-only "$shared" | awk '{print $3}' | sort -u)
+    ;;
+*)
+    echo "usage: run.sh windows|arm" >&2
+    exit 2
+    ;;
+esac
+
+# The exported functions are exactly the header's.
+declared=$(grep -oE '^[A-Za-z_][A-Za-z_0-9 ]*[ *]+crg[A-Za-z_0-9]*\(' include/crgBaseLib.h | grep -oE 'crg[A-Za-z_0-9]*\($' |
+    tr -d '(' | sort -u)
+if [ "$exported" != "$declared" ]; then
+    diff <(echo "$exported") <(echo "$declared") >&2 || true
+    echo "cross $platform: exported functions differ from the header (< exported, > declared)" >&2
+    exit 1
+fi
+ok "exports = the header's $(echo "$declared" | wc -l) functions"
+
+# The C tests.
+build() {
+    local name=$1 source=$2
+    shift 2
+    "$cc" "${strict[@]}" -Iinclude -Ic-tests "c-tests/$source" "$@" -lm -o "$work/$name$exe"
+}
+build test_api test_api.c "${link_shared[@]}"
+build test_api_static test_api.c "${link_static[@]}" "${link_threads[@]}"
+build test_threads test_threads.c "${link_shared[@]}" "${link_threads[@]}"
+build test_extensions test_extensions.c "${link_shared[@]}"
+build test_private_header test_private_header.c "${link_shared[@]}"
+build test_compat test_compat.c "${link_shared[@]}"
+build test_stdout_clean test_stdout_clean.c "${link_shared[@]}"
+mkdir -p "$work/out"
+(cd "$work" && "${run[@]}" "./test_api$exe" "$road" out "$version") >"$work/api.log" 2>&1 || { cat "$work/api.log"; exit 1; }
+ok "$(tail -1 "$work/api.log")"
+(cd "$work" && "${run[@]}" "./test_api_static$exe" "$road" out "$version") >"$work/api_static.log" 2>&1 || { cat "$work/api_static.log"; exit 1; }
+ok "static library: $(tail -1 "$work/api_static.log")"
+for t in threads extensions private_header; do
+    (cd "$work" && "${run[@]}" "./test_$t$exe" "$road" out) >"$work/$t.log" 2>&1 || { cat "$work/$t.log"; exit 1; }
+    ok "$t: $(tail -1 "$work/$t.log")"
+done
+(cd "$work" && OPENCRG_COMPAT=2.0 "${run[@]}" "./test_compat$exe" "$road") >"$work/compat.log" 2>&1 || { cat "$work/compat.log"; exit 1; }
+ok "$(tail -1 "$work/compat.log")"
+runner=$(IFS=';'; echo "${run[*]}")
+cmake -DRUNNER="$runner" -DPROGRAM="$work/test_stdout_clean$exe" -DROAD="$road" -P c-tests/stdout_clean.cmake
+ok "messages on stderr, the program's output alone on stdout"
+
+# The conformance suite in both profiles.
+conformance="$root/../shared/conformance/run.sh"
+[ -f "$conformance" ] || { echo "cross $platform: $conformance not found" >&2; exit 1; }
+for profile in current 2.0.1; do
+    CC=$cc CONFORMANCE_RUNNER="${run[*]}" CONFORMANCE_PROFILE=$profile \
+        sh "$conformance" include "$shared" "$work/conformance-$profile" >"$work/conformance-$profile.log" 2>&1 || true
+    grep -q '^232 passed, 0 failed$' "$work/conformance-$profile.log" || { tail -20 "$work/conformance-$profile.log"; exit 1; }
+    ok "conformance ($profile profile): $(tail -1 "$work/conformance-$profile.log")"
+done
+
+# The command.
+"${tool[@]}" info "$road" >"$work/info.log" 2>&1 || { cat "$work/info.log"; exit 1; }
+grep -q 'demo_road' "$work/info.log" || { cat "$work/info.log"; exit 1; }
+ok "opencrg info: $(grep -c . "$work/info.log") lines"
+
+if [ "$platform" = windows ]; then
+    # The zip's CMake package, found and used by a MinGW project.
+    cmake -S c-tests/consumer -B "$work/consumer" -DCMAKE_SYSTEM_NAME=Windows -DCMAKE_C_COMPILER=x86_64-w64-mingw32-gcc \
+        -DCMAKE_PREFIX_PATH="$tree" -DCMAKE_BUILD_TYPE=Release >/dev/null
+    cmake --build "$work/consumer" >/dev/null
+    cp "$tree/bin/opencrg.dll" "$work/consumer/"
+    for kind in shared static; do
+        (cd "$work/consumer" && "${run[@]}" "./consumer_$kind.exe" "$road") | grep -q '^consumer: z' || exit 1
+    done
+    ok "find_package(OpenCRG) with MinGW: OpenCRG::OpenCRG and OpenCRG::OpenCRG_static"
+    # MSVC's import library, used the way MSVC's linker uses it.
+    mkdir -p "$work/msvc"
+    clang --target=x86_64-pc-windows-msvc "${strict[@]}" -isystem c-tests/cross/msvc-stub -I"$tree/include" \
+        -c c-tests/cross/msvc_link.c -o "$work/msvc/msvc_link.obj"
+    lld-link /nologo /entry:opencrg_entry /subsystem:console /nodefaultlib "$work/msvc/msvc_link.obj" "$tree/lib/opencrg.lib" \
+        /out:"$work/msvc/msvc_link.exe"
+    cp "$tree/bin/opencrg.dll" "$work/msvc/"
+    cp "$road" "$work/msvc/road.crg"
+    (cd "$work/msvc" && "${run[@]}" ./msvc_link.exe) || { echo "cross windows: msvc_link exited with $?" >&2; exit 1; }
+    ok "opencrg.lib linked by lld-link (MSVC's format), the program runs"
+fi
+echo "cross $platform: $passed checks passed"

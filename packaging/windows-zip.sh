@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Builds the library and the command for 64-bit Windows with MinGW-w64 and packs them
+# with the header, the import libraries for MinGW and MSVC and a CMake package:
+#   target/dist/opencrg-VERSION-windows-x86_64.zip   (and the same tree beside it)
+# Needs: rustup target add x86_64-pc-windows-gnu; Debian's gcc-mingw-w64-x86-64 and
+# llvm (llvm-dlltool, for the MSVC import library).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+target=x86_64-pc-windows-gnu
+version=$(sed -n 's/^version = "\([0-9.]*\)"$/\1/p' Cargo.toml | head -1)
+cargo build --release --target "$target" -p opencrg-capi -p opencrg-cli
+built="target/$target/release"
+name="opencrg-$version-windows-x86_64"
+stage="target/dist/$name"
+rm -rf "$stage" "$stage.zip"
+mkdir -p "$stage/bin" "$stage/lib/cmake/OpenCRG" "$stage/include"
+cp "$built/opencrg.dll" "$built/opencrg.exe" "$stage/bin/"
+cp "$built/libopencrg.dll.a" "$built/libopencrg.a" "$built/opencrg.def" "$stage/lib/"
+# MSVC's import library, in the short import format link.exe writes itself.
+dlltool=$(command -v llvm-dlltool || ls /usr/bin/llvm-dlltool-* 2>/dev/null | head -1)
+"$dlltool" -m i386:x86-64 -d "$built/opencrg.def" -D opencrg.dll -l "$stage/lib/opencrg.lib"
+cp include/crgBaseLib.h include/crgBaseLibPrivate.h "$stage/include/"
+cp packaging/windows/OpenCRGConfig.cmake "$stage/lib/cmake/OpenCRG/"
+cmake -DVERSION="$version" -DCMAKE_SIZEOF_VOID_P=8 -DOUT="$stage/lib/cmake/OpenCRG/OpenCRGConfigVersion.cmake" \
+    -P packaging/windows/version.cmake
+cp LICENSE "$stage/"
+(cd target/dist && python3 -m zipfile -c "$name.zip" "$name")
+echo "$stage.zip"
