@@ -136,6 +136,19 @@ class Road:
         self, x: _ArrayLike, y: _ArrayLike, **options: _Setting
     ) -> tuple[_Floats, _Floats, _Floats, _Floats]: ...
 
+    def roughness(self, tracks: list[float] | None = None, segment: float = 100.0) -> list[dict[str, object]]:
+        """IRI (m/km, whole track and per segment) and ISO 8608 PSD class of wheel tracks at v."""
+
+@overload
+def iri(profile: _ArrayLike, dx: float) -> float:
+    """The International Roughness Index (m/km, ASTM E1926) of elevations dx m apart."""
+@overload
+def iri(profile: _ArrayLike, dx: float, segment: float) -> tuple[float, _Floats]:
+    """The IRI and the IRI of each segment (m) from the first sample (NaN: no step in it)."""
+
+def psd(profile: _ArrayLike, dx: float) -> dict[str, object]:
+    """Displacement PSD (Welch, third-octave bands) of elevations dx m apart and its ISO 8608 class."""
+
 class ContactPoint:
     """A point of evaluation: its own options and x/y search history.
 

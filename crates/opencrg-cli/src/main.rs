@@ -6,6 +6,7 @@
 //! opencrg convert IN OUT --format KRBI|KDBI|LRFI|LDFI
 //! opencrg eval ROAD [--xy] [options] < points
 //! opencrg render ROAD OUT.png [--size PX] [--profile u=U|v=V]
+//! opencrg roughness ROAD [--track V]... [--segment LENGTH] [--json] [--plot OUT.png]
 //! ```
 //!
 //! Bad input gives one line on stderr and exit status 2; a road that fails its checks
@@ -14,6 +15,7 @@
 mod canvas;
 mod info;
 mod render;
+mod roughness;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use opencrg::settings;
@@ -80,6 +82,23 @@ enum Command {
         profile: Option<String>,
         #[command(flatten)]
         options: EvalOptions,
+    },
+    /// How rough the road is along wheel tracks: IRI (ASTM E1926) over each track and per segment, ISO 8608 PSD class.
+    Roughness {
+        /// The road file (checked and its modifiers applied, as the C API's programs do).
+        road: PathBuf,
+        /// v of a track [m]; repeat for more (default: -0.85, 0 and 0.85).
+        #[arg(long = "track", allow_negative_numbers = true)]
+        tracks: Vec<f64>,
+        /// Length of the IRI's segments [m].
+        #[arg(long, default_value_t = opencrg::roughness::DEFAULT_SEGMENT)]
+        segment: f64,
+        /// Print JSON instead of a table.
+        #[arg(long)]
+        json: bool,
+        /// Also draw the densities among the class bands and the IRI along u into this PNG.
+        #[arg(long)]
+        plot: Option<PathBuf>,
     },
 }
 
@@ -310,6 +329,29 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
                 }
             };
             picture.write_png(&output)?;
+        }
+        Command::Roughness { road, tracks, segment, json, plot } => {
+            let mut r = load(&road)?;
+            if let Err(e) = r.check() {
+                eprintln!("opencrg: warning: {}: {e}", road.display());
+            }
+            r.apply_modifiers();
+            let tracks = if tracks.is_empty() { opencrg::roughness::DEFAULT_TRACKS.to_vec() } else { tracks };
+            let found = opencrg::roughness::roughness(&Arc::new(r), &tracks, segment)
+                .map_err(|e| format!("{}: {e}", road.display()))?;
+            for t in found.iter().filter(|t| t.skipped > 0.0) {
+                eprintln!("opencrg: warning: track at v = {} m: {:.2} m without elevation left out", t.v, t.skipped);
+            }
+            if json {
+                let text =
+                    serde_json::to_string_pretty(&roughness::json(&found, segment)).map_err(|e| e.to_string())?;
+                println!("{text}");
+            } else {
+                print!("{}", roughness::text(&found, &road.display().to_string(), segment));
+            }
+            if let Some(out) = plot {
+                roughness::plot(&found).write_png(&out)?;
+            }
         }
     }
     Ok(ExitCode::SUCCESS)

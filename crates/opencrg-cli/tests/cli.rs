@@ -210,3 +210,53 @@ fn bad_input_gives_one_line_and_status_2() {
         assert!(err.starts_with("opencrg: ") && !err.contains("panicked"), "{err}");
     }
 }
+
+/// A 200 m road whose every long section is the same wavy profile.
+fn rough_road(d: &Path) -> PathBuf {
+    let p = d.join("rough.crg");
+    let spec = RoadSpec::straight(200.0, 3.0, 0.1, 0.5)
+        .with_elevation(|u, _| 0.004 * (u * std::f64::consts::TAU / 7.0).sin() + 0.002 * (u * 1.9).sin());
+    std::fs::write(&p, spec.to_crg()).unwrap();
+    p
+}
+
+#[test]
+fn roughness_reports_the_library_figures() {
+    let d = dir("roughness");
+    let road = rough_road(&d);
+    let r = Arc::new(Road::load(&road).unwrap());
+    let expected = opencrg::roughness::roughness(&r, &[-0.85, 0.5], 50.0).unwrap();
+    let out = opencrg(
+        &["roughness", road.to_str().unwrap(), "--track", "-0.85", "--track", "0.5", "--segment", "50", "--json"],
+        None,
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let tracks = json["tracks"].as_array().unwrap();
+    assert_eq!(tracks.len(), 2);
+    // (serde_json reads numbers back to within an ulp.)
+    let close = |j: &serde_json::Value, x: f64| (j.as_f64().unwrap() / x - 1.0).abs() < 1e-12;
+    for (t, e) in tracks.iter().zip(&expected) {
+        assert_eq!(t["v"].as_f64(), Some(e.v));
+        assert!(close(&t["iri"], e.iri) && e.iri > 0.0, "{} against {}", t["iri"], e.iri);
+        assert!(close(&t["psd"]["gd_n0"], e.psd.gd_n0), "{} against {}", t["psd"]["gd_n0"], e.psd.gd_n0);
+        assert_eq!(t["psd"]["class"].as_str(), Some(e.psd.class.to_string().as_str()));
+        assert_eq!(t["segments"].as_array().unwrap().len(), 4);
+    }
+    // The table names every track; the plot is a picture.
+    let png = d.join("roughness.png");
+    let out = opencrg(&["roughness", road.to_str().unwrap(), "--plot", png.to_str().unwrap()], None);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let table = text(&out.stdout);
+    for v in ["-0.850", "0.000", "0.850"] {
+        assert!(table.contains(v), "{table}");
+    }
+    assert_eq!(png_size(&png).0, 900);
+    // A track beside the road: one line naming it (after the load's warnings), status 2.
+    let out = opencrg(&["roughness", road.to_str().unwrap(), "--track", "4"], None);
+    assert_eq!(out.status.code(), Some(2));
+    let err = text(&out.stderr);
+    let last = err.lines().last().unwrap_or("");
+    assert!(last.contains("v = 4 m") && last.contains("outside") && last.contains("rough.crg"), "{err}");
+    assert!(err.lines().filter(|l| !l.contains("warning")).count() == 1, "{err}");
+}

@@ -8,6 +8,7 @@
 //! - `arrays`: turning Python scalars and array-likes into slices and back;
 //! - `names`: the options' and modifiers' Python names, from the core's settings table;
 //! - `recipe`: how a road was made and changed, what a pickled road carries;
+//! - `roughness`: IRI and ISO 8608 of tracks and profiles;
 //! - `errors`: the core's errors as Python exceptions.
 
 use pyo3::prelude::*;
@@ -19,6 +20,7 @@ mod evaluation;
 mod names;
 mod recipe;
 mod road;
+mod roughness;
 
 /// The module `opencrg`.
 #[pymodule(name = "opencrg")]
@@ -28,6 +30,8 @@ fn opencrg_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<contact::ContactPoint>()?;
     m.add_function(wrap_pyfunction!(road::_road_from_recipe, m)?)?;
     m.add_function(wrap_pyfunction!(contact::_contact_point_from_state, m)?)?;
+    m.add_function(wrap_pyfunction!(roughness::iri, m)?)?;
+    m.add_function(wrap_pyfunction!(roughness::psd, m)?)?;
     errors::register(m)?;
     names::register(m)?;
     Ok(())

@@ -293,6 +293,17 @@ impl Road {
         Ok(dict)
     }
 
+    /// How rough the road is along wheel tracks at `tracks` (v in m; default -0.85, 0 and
+    /// 0.85): per track the IRI (m/km) over it and per `segment` metres, and the ISO 8608
+    /// density, fit and class; a list of dicts (see the guide).
+    #[pyo3(signature = (tracks = None, segment = crg::roughness::DEFAULT_SEGMENT))]
+    fn roughness<'py>(&self, py: Python<'py>, tracks: Option<Vec<f64>>, segment: f64) -> PyResult<Bound<'py, PyList>> {
+        let tracks = tracks.unwrap_or_else(|| crg::roughness::DEFAULT_TRACKS.to_vec());
+        let road = self.shared();
+        let found = py.detach(|| crg::roughness::roughness(&road, &tracks, segment)).map_err(errors::to_py)?;
+        crate::roughness::tracks_list(py, &found)
+    }
+
     fn __repr__(&self) -> String {
         let (u0, u1) = self.inner.u_range();
         let (v0, v1) = self.inner.v_range();

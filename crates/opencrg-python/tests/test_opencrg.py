@@ -1,6 +1,7 @@
 """The opencrg Python package against the Rust API (through the `opencrg` command), and
 its own contract: shapes, NaN for refused points, options, modifiers, errors, data."""
 
+import json
 import subprocess
 import threading
 
@@ -290,3 +291,30 @@ def test_the_readme_example_runs(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     exec(compile(code, "README.md", "exec"), {})
     assert opencrg.Road(tmp_path / "copy.crg").format == "KDBI"
+
+
+def test_roughness_of_tracks_and_profiles(road_file, opencrg_command):
+    road = opencrg.Road(road_file)
+    tracks = road.roughness(segment=20.0)
+    assert [t["v"] for t in tracks] == [-0.85, 0.0, 0.85]
+    (u0, u1), (du, _) = road.u_range, road.increments
+    u = u0 + du * np.arange(int(round((u1 - u0) / du)) + 1)
+    for t in tracks:
+        profile = road.uv_to_z(u, t["v"])
+        assert t["iri"] == pytest.approx(opencrg.iri(profile, du), rel=1e-12)
+        assert t["psd"]["gd_n0"] == pytest.approx(opencrg.psd(profile, du)["gd_n0"], rel=1e-12)
+        assert t["psd"]["class"] in "ABCDEFGH"
+        assert len(t["segments"]) == 3 and all(s["iri"] > 0 for s in t["segments"])
+        total, parts = opencrg.iri(list(profile), du, segment=20.0)   # any array-like
+        assert total == pytest.approx(t["iri"], rel=1e-12)
+        assert parts == pytest.approx([s["iri"] for s in t["segments"]], rel=1e-12)
+    # The command says the same (the road as read: this one has no checks or modifiers to apply).
+    out = subprocess.run([opencrg_command, "roughness", str(road_file), "--segment", "20", "--json"],
+                         check=True, capture_output=True, text=True).stdout
+    for t, c in zip(tracks, json.loads(out)["tracks"]):
+        assert c["iri"] == pytest.approx(t["iri"], rel=1e-12)
+        assert c["psd"]["class"] == t["psd"]["class"]
+    with pytest.raises(ValueError, match="outside"):
+        road.roughness(tracks=[5.0])
+    with pytest.raises(ValueError, match="too short"):
+        opencrg.iri(np.zeros(20), 0.25)

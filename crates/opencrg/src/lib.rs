@@ -54,8 +54,14 @@ mod query {
     pub(crate) mod normal;
     pub(crate) mod search;
 }
+mod analysis {
+    pub mod iri;
+    pub mod psd;
+    pub mod roughness;
+}
 pub mod synth;
 
+pub use analysis::{iri, psd, roughness};
 pub use base::settings;
 use base::{compat, error, memory};
 pub use model::{grid, header, refline, report};

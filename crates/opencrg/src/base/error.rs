@@ -61,6 +61,9 @@ pub enum Error {
     /// An evaluation was refused (outside the data with border mode none, or a NaN input).
     #[error("evaluation refused: {0}")]
     Eval(&'static str),
+    /// An analysis was refused (a track outside the road, a profile too short for it).
+    #[error("{0}")]
+    Analysis(String),
     /// A file could not be written.
     #[error("{path}: cannot write: {source}")]
     Write {
