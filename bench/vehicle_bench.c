@@ -6,10 +6,8 @@
  *
  * usage: vehicle_bench FILE [STEPS]
  *
- * The car is a compact car (wheelbase 2.64 m, track 1.55 m, the VW Golf's). Its rear
- * axle drives along the reference line at a constant speed, weaving 0.3 m to either
- * side over 60 m; the wheels' u/v follow from that and their x/y from crgEvaluv2xy.
- * At the road's end the car starts over at its beginning. Every pass drives a stretch
+ * The car is that of car.h: a compact car weaving along the reference line, its
+ * wheels' x/y from crgEvaluv2xy. Every pass drives a stretch
  * of road no earlier pass drove (the odometer runs on across passes and cases), after
  * 64 MB were read to push the road out of the caches: each wheel meets cold road, as
  * in a simulation that drives a road once. The wheel positions themselves are read into
@@ -42,20 +40,13 @@
 #include <x86intrin.h>
 #endif
 #include "crgBaseLib.h"
-
-#define WHEELBASE 2.64
-#define TRACK 1.55
-#define DT 0.001
-#define WEAVE 0.3
-#define WEAVE_LENGTH 60.0
-#define MARGIN 1.0
-#define WHEELS 4
+#include "car.h"
 
 enum Call { XY2Z, XY2UV, XY2PK, UV2Z };
 static const char *call_names[] = { "xy2z", "xy2uv", "xy2pk", "uv2z" };
 
 static int g_data;
-static double g_umin, g_umax;
+static struct Road g_road;
 static long g_steps;
 static int g_passes;
 /* The distance the car has driven so far, over every pass and case. */
@@ -126,53 +117,6 @@ static void flush_caches(void)
     for (size_t i = 0; i < size; i += 64)
         acc += buf[i];
     g_flush_sink = acc;
-}
-
-/* Where each wheel is at each step: u/v and x/y. */
-struct Path {
-    double *u, *v, *x, *y; /* [step * WHEELS + wheel] */
-};
-
-static double weave(double u) { return WEAVE * sin(2.0 * M_PI * u / WEAVE_LENGTH); }
-
-/* The u of the rear axle after driving `s` metres from the road's start (laps). */
-static double rear_u(double s)
-{
-    double drivable = g_umax - g_umin - WHEELBASE - 2 * MARGIN;
-    return g_umin + MARGIN + fmod(s, drivable);
-}
-
-/* Fills `p` with `steps` steps at `speed` from odometer reading `s0`. */
-static void drive(struct Path *p, double s0, double speed, long steps, int cp)
-{
-    for (long k = 0; k < steps; k++) {
-        double ur = rear_u(s0 + speed * DT * (double)k), uf = ur + WHEELBASE;
-        double u[WHEELS] = { uf, uf, ur, ur };
-        double v[WHEELS] = { weave(uf) + TRACK / 2, weave(uf) - TRACK / 2, weave(ur) + TRACK / 2, weave(ur) - TRACK / 2 };
-        for (int w = 0; w < WHEELS; w++) {
-            long i = k * WHEELS + w;
-            p->u[i] = u[w];
-            p->v[i] = v[w];
-            crgEvaluv2xy(cp, u[w], v[w], &p->x[i], &p->y[i]);
-        }
-    }
-}
-
-static void path_alloc(struct Path *p, long steps)
-{
-    size_t n = (size_t)steps * WHEELS;
-    p->u = malloc(n * sizeof(double));
-    p->v = malloc(n * sizeof(double));
-    p->x = malloc(n * sizeof(double));
-    p->y = malloc(n * sizeof(double));
-}
-
-static void path_free(struct Path *p)
-{
-    free(p->u);
-    free(p->v);
-    free(p->x);
-    free(p->y);
 }
 
 /* One call at path index i on contact point cp; adds its answers to the sink. */
@@ -316,7 +260,7 @@ static void single_case(enum Call c, double speed, int shared)
     path_alloc(&p, g_steps);
     make_cps(cps, shared);
     for (int pass = 0; pass <= g_passes; pass++) {
-        drive(&p, g_odometer, speed, g_steps, helper);
+        drive(&g_road, &p, g_odometer, speed, g_steps, crgEvaluv2xy, helper);
         g_odometer += speed * DT * (double)g_steps;
         flush_caches();
         double sink = 0;
@@ -371,7 +315,7 @@ static void threaded_case(enum Call c, double speed, int threads)
     pthread_barrier_t start;
     int helper = crgContactPointCreate(g_data);
     double *ns = malloc(sizeof(double) * (size_t)g_passes);
-    double lap = g_umax - g_umin;
+    double lap = g_road.umax - g_road.umin;
     for (int k = 0; k < threads; k++) {
         cars[k].call = c;
         path_alloc(&cars[k].path, g_steps);
@@ -380,7 +324,7 @@ static void threaded_case(enum Call c, double speed, int threads)
     }
     for (int pass = 0; pass <= g_passes; pass++) {
         for (int k = 0; k < threads; k++) {
-            drive(&cars[k].path, g_odometer + lap * k / threads, speed, g_steps, helper);
+            drive(&g_road, &cars[k].path, g_odometer + lap * k / threads, speed, g_steps, crgEvaluv2xy, helper);
             cars[k].timed = pass == g_passes;
         }
         g_odometer += speed * DT * (double)g_steps;
@@ -452,7 +396,7 @@ int main(int argc, char **argv)
         return 1;
     }
     crgDataSetModifiersApply(g_data);
-    crgDataSetGetURange(g_data, &g_umin, &g_umax);
+    crgDataSetGetURange(g_data, &g_road.umin, &g_road.umax);
     g_steps = argc > 2 ? atol(argv[2]) : 50000;
     if (g_steps < 1)
         g_steps = 1;

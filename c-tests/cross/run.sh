@@ -38,9 +38,15 @@ windows)
     need x86_64-w64-mingw32-gcc x86_64-w64-mingw32-objdump wine clang lld-link cmake
     export WINEDEBUG=-all WINEPREFIX="${WINEPREFIX:-$root/target/wineprefix}"
     # A prefix made once, and a server kept up between the many short runs.
-    # Its processes get no descriptor of this script's: they outlive single runs.
-    [ -d "$WINEPREFIX" ] || wineboot -i </dev/null >/dev/null 2>&1
-    wineserver -p 60 </dev/null >/dev/null 2>&1 || true
+    # A prefix made once (waiting until everything its making started has ended), then
+    # one server kept up for all the short runs, so that none meets a server on its way
+    # out. Its processes get no descriptor of this script's: they outlive single runs.
+    if [ ! -d "$WINEPREFIX" ]; then
+        wineboot -i </dev/null >/dev/null 2>&1
+        wineserver -w </dev/null >/dev/null 2>&1
+    fi
+    wineserver -k </dev/null >/dev/null 2>&1 || true
+    wineserver -p </dev/null >/dev/null 2>&1
     trap 'wineserver -k </dev/null >/dev/null 2>&1 || true' EXIT
     packaging/windows-zip.sh >/dev/null
     tree="$root/target/dist/opencrg-$version-windows-x86_64"

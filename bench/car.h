@@ -1,0 +1,74 @@
+/*
+ * The car of the vehicle benchmarks (bench/vehicle_bench.c, bench/vehicle_ab.c): a
+ * compact car (wheelbase 2.64 m, track 1.55 m, the VW Golf's) whose rear axle drives
+ * along the reference line at a constant speed, weaving 0.3 m to either side over 60 m,
+ * in steps of 1 ms; at the road's end it starts over at its beginning. The wheels' u/v
+ * follow from that, their x/y from the library's u/v to x/y.
+ */
+#ifndef OPENCRG_BENCH_CAR_H
+#define OPENCRG_BENCH_CAR_H
+#include <math.h>
+
+#define WHEELBASE 2.64
+#define TRACK 1.55
+#define DT 0.001
+#define WEAVE 0.3
+#define WEAVE_LENGTH 60.0
+#define MARGIN 1.0
+#define WHEELS 4
+
+/* Where each wheel is at each step: u/v and x/y. */
+struct Path {
+    double *u, *v, *x, *y; /* [step * WHEELS + wheel] */
+};
+
+/* The road's u range. */
+struct Road {
+    double umin, umax;
+};
+
+/* u/v to x/y on a contact point: crgEvaluv2xy or a pointer to it. */
+typedef int (*Uv2xy)(int, double, double, double *, double *);
+
+static double weave(double u) { return WEAVE * sin(2.0 * M_PI * u / WEAVE_LENGTH); }
+
+/* The u of the rear axle after driving `s` metres from the road's start (laps). */
+static double rear_u(const struct Road *r, double s)
+{
+    double drivable = r->umax - r->umin - WHEELBASE - 2 * MARGIN;
+    return r->umin + MARGIN + fmod(s, drivable);
+}
+
+/* Fills `p` with `steps` steps at `speed` from odometer reading `s0`. */
+static void drive(const struct Road *r, struct Path *p, double s0, double speed, long steps, Uv2xy uv2xy, int cp)
+{
+    for (long k = 0; k < steps; k++) {
+        double ur = rear_u(r, s0 + speed * DT * (double)k), uf = ur + WHEELBASE;
+        double u[WHEELS] = { uf, uf, ur, ur };
+        double v[WHEELS] = { weave(uf) + TRACK / 2, weave(uf) - TRACK / 2, weave(ur) + TRACK / 2, weave(ur) - TRACK / 2 };
+        for (int w = 0; w < WHEELS; w++) {
+            long i = k * WHEELS + w;
+            p->u[i] = u[w];
+            p->v[i] = v[w];
+            uv2xy(cp, u[w], v[w], &p->x[i], &p->y[i]);
+        }
+    }
+}
+
+static void path_alloc(struct Path *p, long steps)
+{
+    size_t n = (size_t)steps * WHEELS;
+    p->u = malloc(n * sizeof(double));
+    p->v = malloc(n * sizeof(double));
+    p->x = malloc(n * sizeof(double));
+    p->y = malloc(n * sizeof(double));
+}
+
+static void path_free(struct Path *p)
+{
+    free(p->u);
+    free(p->v);
+    free(p->x);
+    free(p->y);
+}
+#endif

@@ -1,0 +1,183 @@
+/*
+ * Two or more libraries offering the classic OpenCRG C API, loaded into one process and
+ * driven in turn along the car's path of car.h: the way to tell which of two builds is
+ * faster on a shared, noisy machine. The path is cut into chunks of 2000 steps (8000
+ * calls); round after round every library drives the same chunk, in turns whose order
+ * flips each round, so a slow spell of the machine hits all of them alike; each round
+ * gives a ratio per library. Separate processes timed minutes apart differ by up to 30 %
+ * on such a machine; the ratios of one round spread by a few per cent.
+ *
+ * The chunks lie on road the libraries have driven before (the round's first turn brings
+ * it into the caches for the others; the order flips, so no library always pays for it):
+ * the figure is the cost of the calls themselves, not of cold road. bench/vehicle_bench.c
+ * measures the road driven once.
+ *
+ * usage: vehicle_ab ROAD LIB.so [LIB.so ...]
+ * Environment: AB_CALLS (xy2z,xy2uv,xy2pk,uv2z), AB_SPEEDS (1,5,30,50), AB_ROUNDS
+ * (default 61). Output per case and library:
+ *   ab CALL SPEED LIB ns MEDIAN min MIN max MAX ratio MEDIAN q1 Q1 q3 Q3
+ * ns: nanoseconds per call (median, smallest and largest over the rounds); ratio: the
+ * first library's time over this one's, per round: its median and quartiles (above 1:
+ * this library is faster).
+ */
+#define _GNU_SOURCE
+#include <dlfcn.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include "car.h"
+
+#define CHUNK 2000
+#define MAX_LIBS 8
+
+typedef int (*Eval1)(int, double, double, double *);
+typedef int (*Eval2)(int, double, double, double *, double *);
+
+struct Lib {
+    const char *path;
+    int data, cp[WHEELS];
+    struct Road road;
+    Eval1 uv2z, xy2z;
+    Eval2 xy2uv, xy2pk, uv2xy;
+};
+
+enum Call { XY2Z, XY2UV, XY2PK, UV2Z };
+static const char *call_names[] = { "xy2z", "xy2uv", "xy2pk", "uv2z" };
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+static void *symbol(void *h, const char *name)
+{
+    void *f = dlsym(h, name);
+    if (!f) {
+        fprintf(stderr, "%s\n", dlerror());
+        exit(1);
+    }
+    return f;
+}
+
+static void load(struct Lib *l, const char *road)
+{
+    void *h = dlopen(l->path, RTLD_NOW | RTLD_LOCAL | RTLD_DEEPBIND);
+    if (!h) {
+        fprintf(stderr, "%s\n", dlerror());
+        exit(1);
+    }
+    ((void (*)(int))symbol(h, "crgMsgSetLevel"))(0);
+    l->data = ((int (*)(const char *))symbol(h, "crgLoaderReadFile"))(road);
+    if (l->data <= 0) {
+        fprintf(stderr, "%s: cannot load %s\n", l->path, road);
+        exit(1);
+    }
+    ((int (*)(int))symbol(h, "crgDataSetModifiersApply"))(l->data);
+    ((int (*)(int, double *, double *))symbol(h, "crgDataSetGetURange"))(l->data, &l->road.umin, &l->road.umax);
+    for (int w = 0; w < WHEELS; w++)
+        l->cp[w] = ((int (*)(int))symbol(h, "crgContactPointCreate"))(l->data);
+    l->uv2z = (Eval1)symbol(h, "crgEvaluv2z");
+    l->xy2z = (Eval1)symbol(h, "crgEvalxy2z");
+    l->xy2uv = (Eval2)symbol(h, "crgEvalxy2uv");
+    l->xy2pk = (Eval2)symbol(h, "crgEvalxy2pk");
+    l->uv2xy = (Eval2)symbol(h, "crgEvaluv2xy");
+}
+
+static volatile double g_sink;
+
+/* Drives steps k0..k1 of `p` with call `c` on `l`'s contact points: ns per call. */
+static double run(const struct Lib *l, enum Call c, const struct Path *p, long k0, long k1)
+{
+    double sum = 0, t0 = now();
+    for (long k = k0; k < k1; k++)
+        for (int w = 0; w < WHEELS; w++) {
+            long i = k * WHEELS + w;
+            double a = 0, b = 0;
+            switch (c) {
+            case XY2Z: l->xy2z(l->cp[w], p->x[i], p->y[i], &a); break;
+            case XY2UV: l->xy2uv(l->cp[w], p->x[i], p->y[i], &a, &b); break;
+            case XY2PK: l->xy2pk(l->cp[w], p->x[i], p->y[i], &a, &b); break;
+            case UV2Z: l->uv2z(l->cp[w], p->u[i], p->v[i], &a); break;
+            }
+            sum += a + b;
+        }
+    double t = now() - t0;
+    g_sink = sum;
+    return t * 1e9 / ((double)(k1 - k0) * WHEELS);
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double at(double *sorted, int n, double q) { return sorted[(int)(q * (n - 1) + 0.5)]; }
+
+static int chosen(const char *var, const char *word)
+{
+    const char *list = getenv(var);
+    if (!list)
+        return 1;
+    size_t n = strlen(word);
+    for (const char *s = list; (s = strstr(s, word)); s += n)
+        if ((s == list || s[-1] == ',') && (s[n] == 0 || s[n] == ','))
+            return 1;
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 3 || argc - 2 > MAX_LIBS) {
+        fprintf(stderr, "usage: vehicle_ab ROAD LIB.so [LIB.so ...] (at most %d)\n", MAX_LIBS);
+        return 2;
+    }
+    int nl = argc - 2, rounds = getenv("AB_ROUNDS") ? atoi(getenv("AB_ROUNDS")) : 61;
+    if (rounds < 3)
+        rounds = 3;
+    struct Lib libs[MAX_LIBS];
+    for (int l = 0; l < nl; l++) {
+        libs[l].path = argv[2 + l];
+        load(&libs[l], argv[1]);
+    }
+    long steps = (long)rounds * CHUNK;
+    double *t = malloc(sizeof(double) * rounds * nl), *sorted = malloc(sizeof(double) * rounds);
+    const double speeds[] = { 1, 5, 30, 50 };
+    char word[32];
+    for (int c = XY2Z; c <= UV2Z; c++) {
+        if (!chosen("AB_CALLS", call_names[c]))
+            continue;
+        for (int s = 0; s < 4; s++) {
+            snprintf(word, sizeof word, "%g", speeds[s]);
+            if (!chosen("AB_SPEEDS", word))
+                continue;
+            struct Path p;
+            path_alloc(&p, steps);
+            drive(&libs[0].road, &p, 0.0, speeds[s], steps, libs[0].uv2xy, libs[0].cp[0]);
+            for (int l = 0; l < nl; l++)
+                run(&libs[l], (enum Call)c, &p, 0, CHUNK);
+            for (int r = 0; r < rounds; r++)
+                for (int k = 0; k < nl; k++) {
+                    int l = (r & 1) ? nl - 1 - k : k;
+                    t[l * rounds + r] = run(&libs[l], (enum Call)c, &p, (long)r * CHUNK, (long)(r + 1) * CHUNK);
+                }
+            for (int l = 0; l < nl; l++) {
+                memcpy(sorted, t + l * rounds, sizeof(double) * rounds);
+                qsort(sorted, rounds, sizeof(double), cmp_double);
+                double med = at(sorted, rounds, 0.5), lo = sorted[0], hi = sorted[rounds - 1];
+                for (int r = 0; r < rounds; r++)
+                    sorted[r] = t[r] / t[l * rounds + r];
+                qsort(sorted, rounds, sizeof(double), cmp_double);
+                printf("ab %s %g %s ns %.2f min %.2f max %.2f ratio %.3f q1 %.3f q3 %.3f\n", call_names[c], speeds[s],
+                       libs[l].path, med, lo, hi, at(sorted, rounds, 0.5), at(sorted, rounds, 0.25), at(sorted, rounds, 0.75));
+            }
+            path_free(&p);
+        }
+    }
+    free(t);
+    free(sorted);
+    return 0;
+}
