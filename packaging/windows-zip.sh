@@ -2,8 +2,8 @@
 # Builds the library and the command for 64-bit Windows with MinGW-w64 and packs them
 # with the header, the import libraries for MinGW and MSVC and a CMake package:
 #   target/dist/opencrg-VERSION-windows-x86_64.zip   (and the same tree beside it)
-# Needs: rustup target add x86_64-pc-windows-gnu; Debian's gcc-mingw-w64-x86-64 and
-# llvm (llvm-dlltool, for the MSVC import library).
+# Needs: rustup target add x86_64-pc-windows-gnu; Debian's gcc-mingw-w64-x86-64 (and
+# cmake, for the package's version file).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 target=x86_64-pc-windows-gnu
@@ -15,10 +15,7 @@ stage="target/dist/$name"
 rm -rf "$stage" "$stage.zip"
 mkdir -p "$stage/bin" "$stage/lib/cmake/OpenCRG" "$stage/include"
 cp "$built/opencrg.dll" "$built/opencrg.exe" "$stage/bin/"
-cp "$built/libopencrg.dll.a" "$built/libopencrg.a" "$built/opencrg.def" "$stage/lib/"
-# MSVC's import library, in the short import format link.exe writes itself.
-dlltool=$(command -v llvm-dlltool || ls /usr/bin/llvm-dlltool-* 2>/dev/null | head -1)
-"$dlltool" -m i386:x86-64 -d "$built/opencrg.def" -D opencrg.dll -l "$stage/lib/opencrg.lib"
+cp "$built/opencrg.lib" "$built/libopencrg.dll.a" "$built/libopencrg.a" "$built/opencrg.def" "$stage/lib/"
 cp include/crgBaseLib.h include/crgBaseLibPrivate.h "$stage/include/"
 cp packaging/windows/OpenCRGConfig.cmake "$stage/lib/cmake/OpenCRG/"
 cmake -DVERSION="$version" -DCMAKE_SIZEOF_VOID_P=8 -DOUT="$stage/lib/cmake/OpenCRG/OpenCRGConfigVersion.cmake" \

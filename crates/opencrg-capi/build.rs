@@ -2,9 +2,10 @@
 //! functions, and only those, everywhere):
 //! - Linux: the soname `libopencrg.so.MAJOR`, with a link of that name beside the built
 //!   library, so programs linked in the build tree find it at run time;
-//! - Windows: a module-definition file `opencrg.def` of the functions `crgBaseLib.h`
-//!   declares, made from the header and written beside the DLL, from which the import
-//!   libraries for MinGW and MSVC are made (see `packaging/`).
+//! - Windows: the import library for MSVC's linker, `opencrg.lib` (rustc writes
+//!   `libopencrg.dll.a` for MinGW itself), and the module-definition file `opencrg.def`,
+//!   both of exactly the functions `crgBaseLib.h` declares, made from the header and
+//!   written beside the DLL.
 use std::path::{Path, PathBuf};
 
 fn main() {
@@ -43,14 +44,44 @@ fn windows(manifest: &Path, profile_dir: Option<PathBuf>) {
     names.dedup();
     assert!(names.len() > 50, "{}: only {} function declarations found", header.display(), names.len());
     let mut def = String::from("; The functions of crgBaseLib.h, made from the header by crates/opencrg-capi/build.rs.\nLIBRARY opencrg.dll\nEXPORTS\n");
-    for name in names {
+    for name in &names {
         def.push_str("    ");
         def.push_str(name);
         def.push('\n');
     }
     if let Some(dir) = profile_dir {
         std::fs::write(dir.join("opencrg.def"), &def).unwrap();
+        write_import_library(&dir.join("opencrg.lib"), &names);
     }
+}
+
+/// `opencrg.lib`: the short import library MSVC's `lib /def:` would make for `names`.
+fn write_import_library(path: &Path, names: &[&str]) {
+    use ar_archive_writer::{write_import_library, COFFShortExport, MachineTypes};
+    let machine = match std::env::var("CARGO_CFG_TARGET_ARCH").as_deref() {
+        Ok("aarch64") => MachineTypes::ARM64,
+        Ok("x86") => MachineTypes::I386,
+        _ => MachineTypes::AMD64,
+    };
+    let exports: Vec<COFFShortExport> = names
+        .iter()
+        .map(|name| COFFShortExport {
+            name: name.to_string(),
+            ext_name: None,
+            symbol_name: None,
+            import_name: None,
+            export_as: None,
+            ordinal: 0,
+            noname: false,
+            data: false,
+            private: false,
+            constant: false,
+        })
+        .collect();
+    let mut out = std::io::Cursor::new(Vec::new());
+    write_import_library(&mut out, "opencrg.dll", &exports, machine, false, false, &[])
+        .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    std::fs::write(path, out.into_inner()).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
 }
 
 /// The name of the function a header line declares at its start (`int crgCheck(int

@@ -7,6 +7,9 @@
 
 use std::ffi::{c_char, c_int};
 
+#[cfg(not(any(target_arch = "x86_64", target_arch = "aarch64")))]
+compile_error!("crgMsgPrint's entry (src/msg_entry.rs) has a jump for x86_64 and aarch64 only: add this processor's");
+
 extern "C" {
     /// The shim's `crgMsgPrint` (csrc/msg_shim.c).
     pub(crate) fn opencrg_msg_print(level: c_int, format: *const c_char, ...);
