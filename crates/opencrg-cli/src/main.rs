@@ -7,12 +7,14 @@
 //! opencrg eval ROAD [--xy] [options] < points
 //! opencrg render ROAD OUT.png [--size PX] [--profile u=U|v=V]
 //! opencrg roughness ROAD [--track V]... [--segment LENGTH] [--json] [--plot OUT.png]
+//! opencrg export ROAD OUT.obj|.stl|.ply|.png [--u A:B] [--v C:D] [--normal-map] [--raw]
 //! ```
 //!
 //! Bad input gives one line on stderr and exit status 2; a road that fails its checks
 //! gives exit status 1 from `check`.
 
 mod canvas;
+mod export;
 mod info;
 mod render;
 mod roughness;
@@ -80,6 +82,24 @@ enum Command {
         /// Draw a section instead: `u=12.5` across the road, `v=0.5` along it.
         #[arg(long)]
         profile: Option<String>,
+        #[command(flatten)]
+        options: EvalOptions,
+    },
+    /// The surface for 3D tools: a mesh at the grid nodes (.obj, .stl, .ply) or a height or normal map (.png).
+    Export {
+        /// The road file (checked and its modifiers applied unless --raw, as `eval` does).
+        road: PathBuf,
+        /// The file to write; its extension names the format.
+        output: PathBuf,
+        /// Only the grid nodes with u in FROM:TO [m].
+        #[arg(long, allow_hyphen_values = true)]
+        u: Option<String>,
+        /// Only the long sections with v in FROM:TO [m].
+        #[arg(long, allow_hyphen_values = true)]
+        v: Option<String>,
+        /// With a .png output: a normal map instead of a height map.
+        #[arg(long)]
+        normal_map: bool,
         #[command(flatten)]
         options: EvalOptions,
     },
@@ -329,6 +349,14 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
                 }
             };
             picture.write_png(&output)?;
+        }
+        Command::Export { road, output, u, v, normal_map, options } => {
+            let u = u.as_deref().map(|t| export::parse_range(t, "u")).transpose()?;
+            let v = v.as_deref().map(|t| export::parse_range(t, "v")).transpose()?;
+            let cp = contact_point(&road, &options)?;
+            let done =
+                export::export(&cp, &output, u, v, normal_map).map_err(|e| format!("{}: {e}", road.display()))?;
+            eprintln!("{done}");
         }
         Command::Roughness { road, tracks, segment, json, plot } => {
             let mut r = load(&road)?;

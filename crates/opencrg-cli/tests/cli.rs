@@ -260,3 +260,47 @@ fn roughness_reports_the_library_figures() {
     assert!(last.contains("v = 4 m") && last.contains("outside") && last.contains("rough.crg"), "{err}");
     assert!(err.lines().filter(|l| !l.contains("warning")).count() == 1, "{err}");
 }
+
+#[test]
+fn export_writes_meshes_and_maps() {
+    let d = dir("export");
+    let road = write_road(&d);
+    let r = road.to_str().unwrap();
+    for (name, extra) in [
+        ("m.obj", vec![]),
+        ("m.stl", vec!["--u", "5:20"]),
+        ("m.ply", vec!["--v", "-1:1"]),
+        ("h.png", vec![]),
+        ("n.png", vec!["--normal-map"]),
+    ] {
+        let out = d.join(name);
+        let mut args = vec!["export", r, out.to_str().unwrap()];
+        args.extend(extra);
+        let o = opencrg(&args, None);
+        assert!(o.status.success(), "{name}: {}", text(&o.stderr));
+        assert!(out.metadata().unwrap().len() > 100, "{name}");
+    }
+    // The STL of u 5..20 at 0.5 m: 31 nodes along, 13 sections across, 2 triangles a cell
+    // (the road's one NaN node at u = 10 takes the cells around it with it).
+    let stl = std::fs::read(d.join("m.stl")).unwrap();
+    let triangles = u32::from_le_bytes(stl[80..84].try_into().unwrap()) as usize;
+    assert_eq!(stl.len(), 84 + 50 * triangles);
+    assert!((2 * 30 * 12 - 18..2 * 30 * 12).contains(&triangles), "{triangles}");
+    // The height map: 16-bit grey, one pixel per node, the z range in its text.
+    let png = std::fs::read(d.join("h.png")).unwrap();
+    assert_eq!(&png[12..16], b"IHDR");
+    assert_eq!((u32::from_be_bytes(png[16..20].try_into().unwrap()), png[24], png[25]), (61, 16, 0));
+    assert!(png.windows(6).any(|w| w == b"z_min\0"));
+    for (args, expected) in [
+        (vec!["export", r, "x.glb"], "unknown export format"),
+        (vec!["export", r, "x.obj", "--normal-map"], "must be a .png"),
+        (vec!["export", r, "x.obj", "--u", "100:200"], "fewer than two grid nodes"),
+        (vec!["export", r, "x.obj", "--u", "a:b"], "expected FROM:TO"),
+    ] {
+        let o = opencrg(&args, None);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = text(&o.stderr);
+        assert!(err.contains(expected) && err.lines().last().unwrap().starts_with("opencrg: "), "{err}");
+    }
+    assert!(!Path::new("x.obj").exists() && !Path::new("x.glb").exists());
+}

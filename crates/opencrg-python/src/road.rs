@@ -91,6 +91,21 @@ impl Road {
     }
 }
 
+impl Road {
+    /// The surface mesh with `options` (see `to_mesh`).
+    fn mesh(
+        &self,
+        py: Python<'_>,
+        u: Option<(f64, f64)>,
+        v: Option<(f64, f64)>,
+        options: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<crg::mesh::Mesh> {
+        let mut cp = crg::ContactPoint::new(self.shared());
+        set_options(&mut cp, options)?;
+        py.detach(|| crg::mesh::grid_mesh(&cp, u, v)).map_err(errors::to_py)
+    }
+}
+
 /// A read-only numpy array holding a copy of `values`.
 fn frozen<'py, T: numpy::Element + Copy>(py: Python<'py>, values: &[T]) -> PyResult<Bound<'py, PyArray1<T>>> {
     let array = PyArray1::from_slice(py, values);
@@ -291,6 +306,61 @@ impl Road {
         let channels: Vec<String> = h.channels.iter().map(ToString::to_string).collect();
         dict.set_item("channels", channels)?;
         Ok(dict)
+    }
+
+    /// The surface as a triangle mesh at the grid nodes with u in `u` and v in `v`
+    /// (`(from, to)` in m; the whole road by default), evaluated with `options`: a dict
+    /// of numpy arrays `positions` (n x 3 float64, x/y/z), `normals` (n x 3 float32),
+    /// `texcoords` (n x 2 float32), `triangles` (m x 3 uint32), `u` and `v` (the nodes;
+    /// vertex `i * len(v) + j` lies at `u[i]`, `v[j]`). Cells without elevation are left out.
+    #[pyo3(signature = (u = None, v = None, **options))]
+    fn to_mesh<'py>(
+        &self,
+        py: Python<'py>,
+        u: Option<(f64, f64)>,
+        v: Option<(f64, f64)>,
+        options: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let mesh = self.mesh(py, u, v, options)?;
+        let d = PyDict::new(py);
+        let rows = |n: usize, k: usize| [n, k];
+        d.set_item(
+            "positions",
+            PyArray1::from_iter(py, mesh.positions.iter().flatten().copied()).reshape(rows(mesh.positions.len(), 3))?,
+        )?;
+        d.set_item(
+            "normals",
+            PyArray1::from_iter(py, mesh.normals.iter().flatten().copied()).reshape(rows(mesh.normals.len(), 3))?,
+        )?;
+        d.set_item(
+            "texcoords",
+            PyArray1::from_iter(py, mesh.texcoords.iter().flatten().copied()).reshape(rows(mesh.texcoords.len(), 2))?,
+        )?;
+        d.set_item(
+            "triangles",
+            PyArray1::from_iter(py, mesh.triangles.iter().flatten().copied()).reshape(rows(mesh.triangles.len(), 3))?,
+        )?;
+        d.set_item("u", PyArray1::from_slice(py, &mesh.u))?;
+        d.set_item("v", PyArray1::from_slice(py, &mesh.v))?;
+        Ok(d)
+    }
+
+    /// Writes the surface mesh (see `to_mesh`) to `path`, the format from its extension:
+    /// `.obj`, `.stl` or `.ply`.
+    #[pyo3(signature = (path, u = None, v = None, **options))]
+    fn write_mesh<'py>(
+        &self,
+        py: Python<'py>,
+        path: PathBuf,
+        u: Option<(f64, f64)>,
+        v: Option<(f64, f64)>,
+        options: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<()> {
+        let format = crg::mesh_files::MeshFormat::from_path(&path).ok_or_else(|| {
+            PyValueError::new_err(format!("{}: unknown mesh format; .obj, .stl or .ply", path.display()))
+        })?;
+        let mesh = self.mesh(py, u, v, options)?;
+        py.detach(|| crg::mesh_files::write_mesh(&mesh, &path, format)).map_err(errors::to_py)
     }
 
     /// How rough the road is along wheel tracks at `tracks` (v in m; default -0.85, 0 and

@@ -318,3 +318,25 @@ def test_roughness_of_tracks_and_profiles(road_file, opencrg_command):
         road.roughness(tracks=[5.0])
     with pytest.raises(ValueError, match="too short"):
         opencrg.iri(np.zeros(20), 0.25)
+
+
+def test_mesh_of_the_surface(road_file, opencrg_command, tmp_path):
+    road = opencrg.Road(road_file)
+    m = road.to_mesh(u=(5.0, 20.0))
+    u, v = m["u"], m["v"]
+    assert m["positions"].shape == (len(u) * len(v), 3) and m["triangles"].shape[1] == 3
+    assert u[0] >= 5.0 and u[-1] <= 20.0 and list(v) == list(road.v)
+    uu, vv = np.repeat(u, len(v)), np.tile(v, len(u))
+    assert same_bits(m["positions"][:, 2], road.uv_to_z(uu, vv))
+    x, y = road.uv_to_xy(uu, vv)
+    assert same_bits(m["positions"][:, 0], x) and same_bits(m["positions"][:, 1], y)
+    # Cells with a corner without elevation are left out, the others are all there.
+    finite = np.isfinite(m["positions"][:, 2])
+    assert finite[m["triangles"]].all()
+    # The file the command writes holds the same mesh.
+    road.write_mesh(tmp_path / "py.ply", u=(5.0, 20.0))
+    subprocess.run([opencrg_command, "export", "--raw", str(road_file), str(tmp_path / "cli.ply"), "--u", "5:20"],
+                   check=True, capture_output=True)
+    assert (tmp_path / "py.ply").read_bytes() == (tmp_path / "cli.ply").read_bytes()
+    with pytest.raises(ValueError, match="unknown mesh format"):
+        road.write_mesh(tmp_path / "x.glb")

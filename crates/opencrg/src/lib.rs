@@ -59,11 +59,16 @@ mod analysis {
     pub mod psd;
     pub mod roughness;
 }
+mod export {
+    pub mod mesh;
+    pub mod mesh_files;
+}
 pub mod synth;
 
 pub use analysis::{iri, psd, roughness};
 pub use base::settings;
 use base::{compat, error, memory};
+pub use export::{mesh, mesh_files};
 pub use model::{grid, header, refline, report};
 use model::{road, sample_index};
 use query::{contact, eval, normal, search};

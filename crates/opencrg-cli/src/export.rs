@@ -1,0 +1,150 @@
+//! `opencrg export`: the surface as a mesh file (OBJ, STL, PLY, written by the core) or
+//! as a texture over the u/v grid: a 16-bit height map, or with `--normal-map` an 8-bit
+//! normal map (PNG).
+
+use opencrg::mesh::grid_mesh;
+use opencrg::mesh_files::{write_mesh, MeshFormat};
+use opencrg::ContactPoint;
+use std::io::Write;
+use std::path::Path;
+
+/// A u or v range given as `A:B`.
+pub fn parse_range(text: &str, what: &str) -> Result<(f64, f64), String> {
+    let bad = || format!("--{what} '{text}': expected FROM:TO in metres");
+    let (a, b) = text.split_once(':').ok_or_else(bad)?;
+    let (a, b): (f64, f64) = (a.trim().parse().map_err(|_| bad())?, b.trim().parse().map_err(|_| bad())?);
+    if a.is_finite() && b.is_finite() {
+        Ok((a, b))
+    } else {
+        Err(bad())
+    }
+}
+
+/// Writes the export `out` names by its extension.
+pub fn export(
+    cp: &ContactPoint,
+    out: &Path,
+    u: Option<(f64, f64)>,
+    v: Option<(f64, f64)>,
+    normal_map: bool,
+) -> Result<String, String> {
+    let mesh = grid_mesh(cp, u, v).map_err(|e| e.to_string())?;
+    let is_png = out.extension().and_then(|e| e.to_str()).is_some_and(|e| e.eq_ignore_ascii_case("png"));
+    if is_png {
+        let (nu, nv) = (mesh.u.len(), mesh.v.len());
+        if normal_map {
+            normal_png(cp, &mesh, nu, nv, out)?;
+            return Ok(format!("{}: normal map of {nu} x {nv} grid nodes", out.display()));
+        }
+        let (lo, hi) = height_png(&mesh, nu, nv, out)?;
+        return Ok(format!("{}: height map of {nu} x {nv} grid nodes, z {lo} to {hi} m", out.display()));
+    }
+    if normal_map {
+        return Err("--normal-map: the output must be a .png file".into());
+    }
+    let format = MeshFormat::from_path(out)
+        .ok_or_else(|| format!("{}: unknown export format; .obj, .stl, .ply or .png", out.display()))?;
+    write_mesh(&mesh, out, format).map_err(|e| e.to_string())?;
+    Ok(format!("{}: {} vertices, {} triangles", out.display(), mesh.positions.len(), mesh.triangles.len()))
+}
+
+/// A PNG of `width` x `height` pixels with `channels`, `bits` deep, and text chunks.
+fn write_png(
+    out: &Path,
+    width: usize,
+    height: usize,
+    colour: png::ColorType,
+    bits: png::BitDepth,
+    texts: &[(&str, String)],
+    data: &[u8],
+) -> Result<(), String> {
+    let fail = |e: &dyn std::fmt::Display| format!("{}: {e}", out.display());
+    let mut tmp_name = out.file_name().unwrap_or_default().to_os_string();
+    tmp_name.push(".part");
+    let tmp = out.with_file_name(tmp_name);
+    let written = (|| -> Result<(), String> {
+        let file = std::fs::File::create(&tmp).map_err(|e| fail(&e))?;
+        let mut w = std::io::BufWriter::new(file);
+        let mut encoder = png::Encoder::new(&mut w, width as u32, height as u32);
+        encoder.set_color(colour);
+        encoder.set_depth(bits);
+        for (key, value) in texts {
+            encoder.add_text_chunk(key.to_string(), value.clone()).map_err(|e| fail(&e))?;
+        }
+        let mut writer = encoder.write_header().map_err(|e| fail(&e))?;
+        writer.write_image_data(data).map_err(|e| fail(&e))?;
+        writer.finish().map_err(|e| fail(&e))?;
+        w.flush().map_err(|e| fail(&e))?;
+        drop(w);
+        std::fs::rename(&tmp, out).map_err(|e| fail(&e))
+    })();
+    if written.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    written
+}
+
+/// The pixel of node (i along u, j across): u runs left to right, v bottom to top (the
+/// left side of the road at the top).
+fn pixel(i: usize, j: usize, nu: usize, nv: usize) -> usize {
+    (nv - 1 - j) * nu + i
+}
+
+/// The 16-bit height map: z from its smallest (0) to its largest value (65535) over the
+/// nodes, 0 where there is none; the range is in the text chunks `z_min` and `z_max`.
+fn height_png(mesh: &opencrg::mesh::Mesh, nu: usize, nv: usize, out: &Path) -> Result<(f64, f64), String> {
+    let z = |k: usize| mesh.positions[k][2];
+    let (lo, hi) = (0..nu * nv)
+        .map(z)
+        .filter(|z| z.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), z| (a.min(z), b.max(z)));
+    if !lo.is_finite() {
+        return Err(format!("{}: no elevation in the range exported", out.display()));
+    }
+    let span = if hi > lo { hi - lo } else { 1.0 };
+    let mut data = vec![0u8; nu * nv * 2];
+    for i in 0..nu {
+        for j in 0..nv {
+            let value = z(i * nv + j);
+            let level = if value.is_finite() { ((value - lo) / span * 65535.0).round() as u16 } else { 0 };
+            let p = 2 * pixel(i, j, nu, nv);
+            data[p..p + 2].copy_from_slice(&level.to_be_bytes());
+        }
+    }
+    let texts = [
+        ("z_min", format!("{lo:?}")),
+        ("z_max", format!("{hi:?}")),
+        ("Software", format!("opencrg {}", env!("CARGO_PKG_VERSION"))),
+    ];
+    write_png(out, nu, nv, png::ColorType::Grayscale, png::BitDepth::Sixteen, &texts, &data)?;
+    Ok((lo, hi))
+}
+
+/// The normal map: each node's unit normal in the road's own frame (along u, across to
+/// the left, up) as RGB = (n + 1) / 2 · 255, the convention of tangent-space normal maps.
+fn normal_png(cp: &ContactPoint, mesh: &opencrg::mesh::Mesh, nu: usize, nv: usize, out: &Path) -> Result<(), String> {
+    let mut data = vec![0u8; nu * nv * 3];
+    for i in 0..nu {
+        for j in 0..nv {
+            let k = i * nv + j;
+            let n = mesh.normals[k].map(f64::from);
+            // The heading of the road there turns x/y into along/across.
+            let (phi, _) = cp.uv_to_pk(mesh.u[i], mesh.v[j]).unwrap_or((0.0, 0.0));
+            let (s, c) = phi.sin_cos();
+            let along = n[0] * c + n[1] * s;
+            let across = -n[0] * s + n[1] * c;
+            let rgb = [along, across, n[2]].map(|x| ((x.clamp(-1.0, 1.0) + 1.0) * 0.5 * 255.0).round() as u8);
+            let p = 3 * pixel(i, j, nu, nv);
+            data[p..p + 3].copy_from_slice(&rgb);
+        }
+    }
+    write_png(
+        out,
+        nu,
+        nv,
+        png::ColorType::Rgb,
+        png::BitDepth::Eight,
+        &[("Software", format!("opencrg {}", env!("CARGO_PKG_VERSION")))],
+        &data,
+    )
+}

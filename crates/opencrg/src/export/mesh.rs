@@ -1,0 +1,94 @@
+//! The road's surface as a triangle mesh for 3D tools: a vertex at every grid node (u
+//! along the reference line, v at each long section), its x/y/z, upward normal and u/v
+//! texture coordinates evaluated by a [`ContactPoint`] (so with its options, and with
+//! the road's modifiers as applied), two triangles per cell; cells with a corner without
+//! elevation (NaN) are left out.
+
+use crate::contact::ContactPoint;
+use crate::error::{Error, Result};
+
+/// A triangle mesh: positions in the road's x/y/z frame (m), upward unit normals, texture
+/// coordinates (u and v of the road, scaled to 0..1 over the mesh), and triangles as
+/// indices into them, counter-clockwise seen from above.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Mesh {
+    /// x, y, z of each vertex.
+    pub positions: Vec<[f64; 3]>,
+    /// The upward unit normal at each vertex.
+    pub normals: Vec<[f32; 3]>,
+    /// u and v of each vertex, scaled to 0..1 over the mesh.
+    pub texcoords: Vec<[f32; 2]>,
+    /// Three vertex indices per triangle.
+    pub triangles: Vec<[u32; 3]>,
+    /// The u of the grid nodes (m): vertex `i * v.len() + j` lies at `u[i]`, `v[j]`.
+    pub u: Vec<f64>,
+    /// The v of the long sections (m).
+    pub v: Vec<f64>,
+}
+
+/// The grid nodes of the road within `range` (inclusive), as indices into `nodes`.
+fn nodes_within(nodes: &[f64], range: Option<(f64, f64)>, what: &str) -> Result<std::ops::Range<usize>> {
+    let Some((a, b)) = range else { return Ok(0..nodes.len()) };
+    let first = nodes.partition_point(|&x| x < a.min(b));
+    let end = nodes.partition_point(|&x| x <= a.max(b));
+    if end < first + 2 {
+        let (lo, hi) = (nodes.first().copied().unwrap_or(0.0), nodes.last().copied().unwrap_or(0.0));
+        return Err(Error::Analysis(format!(
+            "{what} {a}:{b} holds fewer than two grid nodes of the road (which spans {what} {lo} to {hi})"
+        )));
+    }
+    Ok(first..end)
+}
+
+/// The mesh of the surface the contact point evaluates, over the grid nodes with u in
+/// `u` and v in `v` (m, inclusive; the whole road when `None`). Refused: a range holding
+/// fewer than two nodes, a mesh of 2^32 vertices or more.
+pub fn grid_mesh(cp: &ContactPoint, u: Option<(f64, f64)>, v: Option<(f64, f64)>) -> Result<Mesh> {
+    let road = cp.road();
+    let (u_first, _) = road.u_range();
+    let du = road.increments().0;
+    let nu = road.grid().nu;
+    let us: Vec<f64> = (0..nu).map(|i| u_first + i as f64 * du).collect();
+    let (iu, iv) = (nodes_within(&us, u, "u")?, nodes_within(&road.grid().v, v, "v")?);
+    let vs = &road.grid().v[iv.clone()];
+    let us = &us[iu];
+    let count = us.len() * vs.len();
+    if count > u32::MAX as usize {
+        return Err(Error::Analysis(format!("a mesh of {count} vertices is more than 32-bit indices can hold")));
+    }
+    let (u0, u_span) = (us[0], us[us.len() - 1] - us[0]);
+    let (v0, v_span) = (vs[0], vs[vs.len() - 1] - vs[0]);
+    let mut mesh = Mesh {
+        positions: Vec::with_capacity(count),
+        normals: Vec::with_capacity(count),
+        texcoords: Vec::with_capacity(count),
+        triangles: Vec::new(),
+        u: us.to_vec(),
+        v: vs.to_vec(),
+    };
+    for &u in us {
+        for &v in vs {
+            let (x, y) = cp.uv_to_xy(u, v).unwrap_or((f64::NAN, f64::NAN));
+            let (z, n) = cp.uv_to_normal(u, v).unwrap_or((f64::NAN, [0.0, 0.0, 1.0]));
+            mesh.positions.push([x, y, z]);
+            mesh.normals.push(n.map(|c| c as f32));
+            mesh.texcoords.push([((u - u0) / u_span) as f32, ((v - v0) / v_span) as f32]);
+        }
+    }
+    let nv = vs.len();
+    let ok = |i: usize| mesh.positions[i].iter().all(|c| c.is_finite());
+    let mut triangles = Vec::with_capacity(2 * (us.len() - 1) * (nv - 1));
+    for i in 0..us.len() - 1 {
+        for j in 0..nv - 1 {
+            // v grows to the left of the direction of u: (u, v), (u+, v), (u+, v+) turn
+            // counter-clockwise seen from above.
+            let (a, b, c, d) = (i * nv + j, (i + 1) * nv + j, (i + 1) * nv + j + 1, i * nv + j + 1);
+            if ok(a) && ok(b) && ok(c) && ok(d) {
+                triangles.push([a as u32, b as u32, c as u32]);
+                triangles.push([a as u32, c as u32, d as u32]);
+            }
+        }
+    }
+    mesh.triangles = triangles;
+    Ok(mesh)
+}
