@@ -5,7 +5,8 @@
 # symbol checks, the CMake consumer project, the conformance suite in both behaviour
 # profiles (.so and .a) and the differential tester; the same C tests and conformance
 # suite on Windows (MinGW-w64 build under wine, with the zip's CMake package and MSVC
-# import library) and on 64-bit Arm Linux (under qemu); last the Python package: its
+# import library) and on 64-bit Arm Linux (under qemu); the .glb export against the Khronos
+# glTF validator; last the Python package: its
 # manylinux2014 wheel built with maturin and zig, installed into a fresh virtual
 # environment without cargo, and its pytest suite (pickling, multiprocessing, Dask).
 set -euo pipefail
@@ -20,6 +21,12 @@ cmake --build build -j"$(nproc)"
 ctest --test-dir build --output-on-failure -j"$(nproc)"
 c-tests/cross/run.sh windows
 c-tests/cross/run.sh arm
+# The .glb export of the demo road (curved, sloped, banked), whole and a part, against the
+# Khronos glTF validator, from the npm registry.
+npm install --silent --no-save --prefix target/gltf-validator gltf-validator >/dev/null
+target/release/opencrg export examples/data/demo_road.crg target/demo_road.glb
+target/release/opencrg export examples/data/demo_road.crg target/demo_part.glb --u 30:60 --v -1:2
+NODE_PATH=target/gltf-validator/node_modules node crates/opencrg-cli/tests/validate_glb.js target/demo_road.glb target/demo_part.glb
 # The Python wheel as users get it: manylinux2014 (glibc 2.17), abi3, linked by zig.
 python3 -m venv target/python-build
 target/python-build/bin/pip install -q --upgrade pip

@@ -144,7 +144,7 @@ class Road:
         self, path: str | PathLike[str], u: tuple[float, float] | None = None,
         v: tuple[float, float] | None = None, **options: _Setting
     ) -> None:
-        """Writes the surface mesh as .obj, .stl or .ply."""
+        """Writes the surface mesh as .obj, .stl, .ply or .glb."""
     def roughness(self, tracks: list[float] | None = None, segment: float = 100.0) -> list[dict[str, object]]:
         """IRI (m/km, whole track and per segment) and ISO 8608 PSD class of wheel tracks at v."""
 

@@ -1,4 +1,4 @@
-//! `opencrg export`: the surface as a mesh file (OBJ, STL, PLY, written by the core) or
+//! `opencrg export`: the surface as a mesh file (OBJ, STL, PLY, glTF, written by the core) or
 //! as a texture over the u/v grid: a 16-bit height map, or with `--normal-map` an 8-bit
 //! normal map (PNG).
 
@@ -43,7 +43,7 @@ pub fn export(
         return Err("--normal-map: the output must be a .png file".into());
     }
     let format = MeshFormat::from_path(out)
-        .ok_or_else(|| format!("{}: unknown export format; .obj, .stl, .ply or .png", out.display()))?;
+        .ok_or_else(|| format!("{}: unknown export format; .obj, .stl, .ply, .glb or .png", out.display()))?;
     write_mesh(&mesh, out, format).map_err(|e| e.to_string())?;
     Ok(format!("{}: {} vertices, {} triangles", out.display(), mesh.positions.len(), mesh.triangles.len()))
 }

@@ -7,7 +7,7 @@
 //! opencrg eval ROAD [--xy] [options] < points
 //! opencrg render ROAD OUT.png [--size PX] [--profile u=U|v=V]
 //! opencrg roughness ROAD [--track V]... [--segment LENGTH] [--json] [--plot OUT.png]
-//! opencrg export ROAD OUT.obj|.stl|.ply|.png [--u A:B] [--v C:D] [--normal-map] [--raw]
+//! opencrg export ROAD OUT.obj|.stl|.ply|.glb|.png [--u A:B] [--v C:D] [--normal-map] [--raw]
 //! ```
 //!
 //! Bad input gives one line on stderr and exit status 2; a road that fails its checks
@@ -85,7 +85,7 @@ enum Command {
         #[command(flatten)]
         options: EvalOptions,
     },
-    /// The surface for 3D tools: a mesh at the grid nodes (.obj, .stl, .ply) or a height or normal map (.png).
+    /// The surface for 3D tools: a mesh at the grid nodes (.obj, .stl, .ply, .glb) or a height or normal map (.png).
     Export {
         /// The road file (checked and its modifiers applied unless --raw, as `eval` does).
         road: PathBuf,

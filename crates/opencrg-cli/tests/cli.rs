@@ -292,7 +292,7 @@ fn export_writes_meshes_and_maps() {
     assert_eq!((u32::from_be_bytes(png[16..20].try_into().unwrap()), png[24], png[25]), (61, 16, 0));
     assert!(png.windows(6).any(|w| w == b"z_min\0"));
     for (args, expected) in [
-        (vec!["export", r, "x.glb"], "unknown export format"),
+        (vec!["export", r, "x.gltf"], "unknown export format"),
         (vec!["export", r, "x.obj", "--normal-map"], "must be a .png"),
         (vec!["export", r, "x.obj", "--u", "100:200"], "fewer than two grid nodes"),
         (vec!["export", r, "x.obj", "--u", "a:b"], "expected FROM:TO"),
@@ -302,5 +302,5 @@ fn export_writes_meshes_and_maps() {
         let err = text(&o.stderr);
         assert!(err.contains(expected) && err.lines().last().unwrap().starts_with("opencrg: "), "{err}");
     }
-    assert!(!Path::new("x.obj").exists() && !Path::new("x.glb").exists());
+    assert!(!Path::new("x.obj").exists() && !Path::new("x.gltf").exists());
 }

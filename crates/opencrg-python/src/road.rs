@@ -346,7 +346,7 @@ impl Road {
     }
 
     /// Writes the surface mesh (see `to_mesh`) to `path`, the format from its extension:
-    /// `.obj`, `.stl` or `.ply`.
+    /// `.obj`, `.stl`, `.ply` or `.glb`.
     #[pyo3(signature = (path, u = None, v = None, **options))]
     fn write_mesh<'py>(
         &self,
@@ -357,7 +357,7 @@ impl Road {
         options: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<()> {
         let format = crg::mesh_files::MeshFormat::from_path(&path).ok_or_else(|| {
-            PyValueError::new_err(format!("{}: unknown mesh format; .obj, .stl or .ply", path.display()))
+            PyValueError::new_err(format!("{}: unknown mesh format; .obj, .stl, .ply or .glb", path.display()))
         })?;
         let mesh = self.mesh(py, u, v, options)?;
         py.detach(|| crg::mesh_files::write_mesh(&mesh, &path, format)).map_err(errors::to_py)

@@ -339,4 +339,4 @@ def test_mesh_of_the_surface(road_file, opencrg_command, tmp_path):
                    check=True, capture_output=True)
     assert (tmp_path / "py.ply").read_bytes() == (tmp_path / "cli.ply").read_bytes()
     with pytest.raises(ValueError, match="unknown mesh format"):
-        road.write_mesh(tmp_path / "x.glb")
+        road.write_mesh(tmp_path / "x.gltf")

@@ -60,6 +60,7 @@ mod analysis {
     pub mod roughness;
 }
 mod export {
+    pub(crate) mod gltf;
     pub mod mesh;
     pub mod mesh_files;
 }
@@ -68,6 +69,7 @@ pub mod synth;
 pub use analysis::{iri, psd, roughness};
 pub use base::settings;
 use base::{compat, error, memory};
+use export::gltf;
 pub use export::{mesh, mesh_files};
 pub use model::{grid, header, refline, report};
 use model::{road, sample_index};

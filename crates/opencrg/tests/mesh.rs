@@ -130,6 +130,39 @@ fn files_follow_their_formats() {
     // A file that cannot be written leaves nothing behind.
     let bad = dir.join("no-such-folder").join("road.obj");
     assert!(write_mesh(&mesh, &bad, MeshFormat::Obj).is_err());
-    assert!(MeshFormat::from_path(std::path::Path::new("road.glb")).is_none());
+    assert!(MeshFormat::from_path(std::path::Path::new("road.gltf")).is_none());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The .glb reads back with the `gltf` crate (which validates it): y up, the node's
+/// translation plus each single-precision position at the vertex, every index and
+/// normal there.
+#[test]
+fn gltf_reads_back() {
+    let cp = road(true);
+    let mesh = grid_mesh(&cp, None, None).unwrap();
+    let dir = std::env::temp_dir().join(format!("opencrg-glb-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("road.glb");
+    write_mesh(&mesh, &path, MeshFormat::from_path(&path).unwrap()).unwrap();
+    let (doc, buffers, _) = gltf::import(&path).unwrap();
+    let node = doc.nodes().next().unwrap();
+    let t = node.transform().decomposed().0;
+    let primitive = node.mesh().unwrap().primitives().next().unwrap();
+    let reader = primitive.reader(|b| Some(&buffers[b.index()]));
+    let positions: Vec<[f32; 3]> = reader.read_positions().unwrap().collect();
+    assert_eq!(positions.len(), mesh.positions.len());
+    for (p, q) in mesh.positions.iter().zip(&positions) {
+        if p.iter().all(|c| c.is_finite()) {
+            let back = [f64::from(q[0] + t[0]), -f64::from(q[2] + t[2]), f64::from(q[1] + t[1])];
+            // The translation is kept in single precision by the reader; the file holds it in double.
+            assert!(p.iter().zip(back).all(|(a, b)| (a - b).abs() < 1e-4), "{p:?} read back as {back:?}");
+        }
+    }
+    let indices: Vec<u32> = reader.read_indices().unwrap().into_u32().collect();
+    assert_eq!(indices, mesh.triangles.iter().flatten().copied().collect::<Vec<_>>());
+    let normals: Vec<[f32; 3]> = reader.read_normals().unwrap().collect();
+    assert_eq!(normals[0], [mesh.normals[0][0], mesh.normals[0][2], -mesh.normals[0][1]]);
+    assert_eq!(reader.read_tex_coords(0).unwrap().into_f32().count(), mesh.positions.len());
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -1,5 +1,6 @@
 //! Meshes as files: Wavefront OBJ (text, with normals and texture coordinates), binary
-//! STL, binary PLY (double positions, float normals and texture coordinates). Written to
+//! STL, binary PLY (double positions, float normals and texture coordinates), binary
+//! glTF 2.0 (see [`crate::gltf`]). Written to
 //! a temporary file beside the target and renamed into place: a failed write leaves no
 //! half-written file.
 
@@ -17,6 +18,8 @@ pub enum MeshFormat {
     Stl,
     /// Binary little-endian PLY.
     Ply,
+    /// Binary glTF 2.0 (`.glb`).
+    Glb,
 }
 
 impl MeshFormat {
@@ -26,6 +29,7 @@ impl MeshFormat {
             "obj" => Some(MeshFormat::Obj),
             "stl" => Some(MeshFormat::Stl),
             "ply" => Some(MeshFormat::Ply),
+            "glb" => Some(MeshFormat::Glb),
             _ => None,
         }
     }
@@ -43,6 +47,7 @@ pub fn write_mesh(mesh: &Mesh, path: &Path, format: MeshFormat) -> Result<()> {
             MeshFormat::Obj => obj(mesh, &mut out)?,
             MeshFormat::Stl => stl(mesh, &mut out)?,
             MeshFormat::Ply => ply(mesh, &mut out)?,
+            MeshFormat::Glb => crate::gltf::glb(mesh, &mut out)?,
         }
         out.into_inner().map_err(|e| e.into_error())?.sync_all()?;
         std::fs::rename(&tmp, path)
