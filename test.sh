@@ -6,7 +6,7 @@
 # profiles (.so and .a) and the differential tester; the same C tests and conformance
 # suite on Windows (MinGW-w64 build under wine, with the zip's CMake package and MSVC
 # import library) and on 64-bit Arm Linux (under qemu); the .glb export against the Khronos
-# glTF validator; last the Python package: its
+# glTF validator, the 3D view in headless Chromium; last the Python package: its
 # manylinux2014 wheel built with maturin and zig, installed into a fresh virtual
 # environment without cargo, and its pytest suite (pickling, multiprocessing, Dask).
 set -euo pipefail
@@ -27,6 +27,14 @@ npm install --silent --no-save --prefix target/gltf-validator gltf-validator >/d
 target/release/opencrg export examples/data/demo_road.crg target/demo_road.glb
 target/release/opencrg export examples/data/demo_road.crg target/demo_part.glb --u 30:60 --v -1:2
 NODE_PATH=target/gltf-validator/node_modules node crates/opencrg-cli/tests/validate_glb.js target/demo_road.glb target/demo_part.glb
+# The 3D view of the demo road in headless Chromium (software WebGL), checked on a screenshot.
+target/release/opencrg view examples/data/demo_road.crg target/demo_view.html
+rm -rf target/chromium-profile target/demo_view.png
+timeout 120 chromium --headless --no-sandbox --disable-gpu --use-angle=swiftshader --enable-unsafe-swiftshader \
+    --disable-background-networking --disable-component-update --disable-sync --no-first-run \
+    --user-data-dir="$PWD/target/chromium-profile" --window-size=900,600 --virtual-time-budget=3000 \
+    --screenshot="$PWD/target/demo_view.png" "file://$PWD/target/demo_view.html" >/dev/null 2>&1
+python3 crates/opencrg-cli/tests/check_view.py target/demo_view.png
 # The Python wheel as users get it: manylinux2014 (glibc 2.17), abi3, linked by zig.
 python3 -m venv target/python-build
 target/python-build/bin/pip install -q --upgrade pip

@@ -8,6 +8,7 @@
 //! opencrg render ROAD OUT.png [--size PX] [--profile u=U|v=V]
 //! opencrg roughness ROAD [--track V]... [--segment LENGTH] [--json] [--plot OUT.png]
 //! opencrg export ROAD OUT.obj|.stl|.ply|.glb|.png [--u A:B] [--v C:D] [--normal-map] [--raw]
+//! opencrg view ROAD OUT.html [--u A:B] [--v C:D] [--max-vertices N] [--raw]
 //! ```
 //!
 //! Bad input gives one line on stderr and exit status 2; a road that fails its checks
@@ -18,6 +19,7 @@ mod export;
 mod info;
 mod render;
 mod roughness;
+mod view;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use opencrg::settings;
@@ -100,6 +102,24 @@ enum Command {
         /// With a .png output: a normal map instead of a height map.
         #[arg(long)]
         normal_map: bool,
+        #[command(flatten)]
+        options: EvalOptions,
+    },
+    /// One self-contained HTML file showing the road in 3D (WebGL, works offline).
+    View {
+        /// The road file (checked and its modifiers applied unless --raw).
+        road: PathBuf,
+        /// The HTML file to write.
+        output: PathBuf,
+        /// Only the grid nodes with u in FROM:TO [m].
+        #[arg(long, allow_hyphen_values = true)]
+        u: Option<String>,
+        /// Only the long sections with v in FROM:TO [m].
+        #[arg(long, allow_hyphen_values = true)]
+        v: Option<String>,
+        /// Largest number of grid nodes shown (more: every k-th cross section).
+        #[arg(long, default_value_t = 1_000_000)]
+        max_vertices: usize,
         #[command(flatten)]
         options: EvalOptions,
     },
@@ -356,6 +376,15 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
             let cp = contact_point(&road, &options)?;
             let done =
                 export::export(&cp, &output, u, v, normal_map).map_err(|e| format!("{}: {e}", road.display()))?;
+            eprintln!("{done}");
+        }
+        Command::View { road, output, u, v, max_vertices, options } => {
+            let u = u.as_deref().map(|t| export::parse_range(t, "u")).transpose()?;
+            let v = v.as_deref().map(|t| export::parse_range(t, "v")).transpose()?;
+            let cp = contact_point(&road, &options)?;
+            let name = road.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+            let done =
+                view::view(&cp, &name, &output, u, v, max_vertices).map_err(|e| format!("{}: {e}", road.display()))?;
             eprintln!("{done}");
         }
         Command::Roughness { road, tracks, segment, json, plot } => {

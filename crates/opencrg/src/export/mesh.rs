@@ -44,14 +44,22 @@ fn nodes_within(nodes: &[f64], range: Option<(f64, f64)>, what: &str) -> Result<
 /// `u` and v in `v` (m, inclusive; the whole road when `None`). Refused: a range holding
 /// fewer than two nodes, a mesh of 2^32 vertices or more.
 pub fn grid_mesh(cp: &ContactPoint, u: Option<(f64, f64)>, v: Option<(f64, f64)>) -> Result<Mesh> {
+    grid_mesh_every(cp, u, v, 1)
+}
+
+/// [`grid_mesh`] over every `step`-th node along u (and the last one in the range): a
+/// lighter mesh for a view, whose vertices still lie on the surface.
+pub fn grid_mesh_every(cp: &ContactPoint, u: Option<(f64, f64)>, v: Option<(f64, f64)>, step: usize) -> Result<Mesh> {
     let road = cp.road();
     let (u_first, _) = road.u_range();
     let du = road.increments().0;
     let nu = road.grid().nu;
-    let us: Vec<f64> = (0..nu).map(|i| u_first + i as f64 * du).collect();
-    let (iu, iv) = (nodes_within(&us, u, "u")?, nodes_within(&road.grid().v, v, "v")?);
+    let all: Vec<f64> = (0..nu).map(|i| u_first + i as f64 * du).collect();
+    let (iu, iv) = (nodes_within(&all, u, "u")?, nodes_within(&road.grid().v, v, "v")?);
     let vs = &road.grid().v[iv.clone()];
-    let us = &us[iu];
+    let last = iu.end - 1;
+    let us: Vec<f64> = iu.step_by(step.max(1)).chain(std::iter::once(last)).map(|i| all[i]).collect();
+    let us = &us[..if us.len() > 1 && us[us.len() - 2] == us[us.len() - 1] { us.len() - 1 } else { us.len() }];
     let count = us.len() * vs.len();
     if count > u32::MAX as usize {
         return Err(Error::Analysis(format!("a mesh of {count} vertices is more than 32-bit indices can hold")));

@@ -1,6 +1,6 @@
 //! Meshes as files: Wavefront OBJ (text, with normals and texture coordinates), binary
 //! STL, binary PLY (double positions, float normals and texture coordinates), binary
-//! glTF 2.0 (see [`crate::gltf`]). Written to
+//! glTF 2.0 (`.glb`: y up, positions relative to the node's translation). Written to
 //! a temporary file beside the target and renamed into place: a failed write leaves no
 //! half-written file.
 
@@ -43,12 +43,7 @@ pub fn write_mesh(mesh: &Mesh, path: &Path, format: MeshFormat) -> Result<()> {
     let tmp = path.with_file_name(tmp_name);
     let written = (|| {
         let mut out = BufWriter::with_capacity(1 << 20, std::fs::File::create(&tmp)?);
-        match format {
-            MeshFormat::Obj => obj(mesh, &mut out)?,
-            MeshFormat::Stl => stl(mesh, &mut out)?,
-            MeshFormat::Ply => ply(mesh, &mut out)?,
-            MeshFormat::Glb => crate::gltf::glb(mesh, &mut out)?,
-        }
+        write_mesh_to(mesh, &mut out, format)?;
         out.into_inner().map_err(|e| e.into_error())?.sync_all()?;
         std::fs::rename(&tmp, path)
     })();
@@ -56,6 +51,16 @@ pub fn write_mesh(mesh: &Mesh, path: &Path, format: MeshFormat) -> Result<()> {
         let _ = std::fs::remove_file(&tmp);
     }
     written.map_err(err)
+}
+
+/// Writes `mesh` in `format` to any writer.
+pub fn write_mesh_to(mesh: &Mesh, out: &mut impl Write, format: MeshFormat) -> io::Result<()> {
+    match format {
+        MeshFormat::Obj => obj(mesh, out),
+        MeshFormat::Stl => stl(mesh, out),
+        MeshFormat::Ply => ply(mesh, out),
+        MeshFormat::Glb => crate::gltf::glb(mesh, out),
+    }
 }
 
 fn obj(mesh: &Mesh, out: &mut impl Write) -> io::Result<()> {

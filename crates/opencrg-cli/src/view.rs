@@ -1,0 +1,93 @@
+//! `opencrg view`: one self-contained HTML file showing the road in 3D (WebGL 2, no
+//! external script): the `.glb` export of the surface embedded in `viewer.html`, with the
+//! reference line. Roads of more than `max_vertices` grid nodes are shown on every k-th
+//! cross section.
+
+use opencrg::mesh::grid_mesh_every;
+use opencrg::mesh_files::{write_mesh_to, MeshFormat};
+use opencrg::ContactPoint;
+use std::path::Path;
+
+/// The viewer page; `__TITLE__`, `__INFO__`, `__GLB__` and `__LINE__` are filled in.
+const PAGE: &str = include_str!("viewer.html");
+
+/// Standard base64 of `data`.
+fn base64(data: &[u8]) -> String {
+    const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    let mut out = String::with_capacity(data.len().div_ceil(3) * 4);
+    for chunk in data.chunks(3) {
+        let b = [chunk[0], *chunk.get(1).unwrap_or(&0), *chunk.get(2).unwrap_or(&0)];
+        let n = (u32::from(b[0]) << 16) | (u32::from(b[1]) << 8) | u32::from(b[2]);
+        for k in 0..4 {
+            if k <= chunk.len() {
+                out.push(char::from(ALPHABET[(n >> (18 - 6 * k) & 63) as usize]));
+            } else {
+                out.push('=');
+            }
+        }
+    }
+    out
+}
+
+/// Text safe inside an HTML element.
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")
+}
+
+/// Writes the viewer of the surface `cp` evaluates (u and v ranges as `export`) to `out`.
+pub fn view(
+    cp: &ContactPoint,
+    name: &str,
+    out: &Path,
+    u: Option<(f64, f64)>,
+    v: Option<(f64, f64)>,
+    max_vertices: usize,
+) -> Result<String, String> {
+    let road = cp.road();
+    let nodes = road.grid().nu.saturating_mul(road.grid().nv);
+    let step = nodes.div_ceil(max_vertices.max(1)).max(1);
+    let mesh = grid_mesh_every(cp, u, v, step).map_err(|e| e.to_string())?;
+    let mut glb = Vec::new();
+    write_mesh_to(&mesh, &mut glb, MeshFormat::Glb).map_err(|e| e.to_string())?;
+    // The reference line over the mesh's u range, at most 4000 points.
+    let line = road.reference_line();
+    let (u0, u1) = (mesh.u[0], mesh.u[mesh.u.len() - 1]);
+    let inside: Vec<usize> = (0..line.n).filter(|&i| (u0..=u1).contains(&line.u_at(i))).collect();
+    let points: Vec<String> = inside
+        .iter()
+        .step_by(inside.len().div_ceil(4000).max(1))
+        .map(|&i| format!("[{:?},{:?},{:?}]", line.x[i], line.y[i], line.z_at(i)))
+        .collect();
+    let info = format!(
+        "{} &middot; u {u0:.2} to {u1:.2} m &middot; {} vertices, {} triangles{}",
+        escape(name),
+        mesh.positions.len(),
+        mesh.triangles.len(),
+        if step > 1 { format!(" (every {step}th cross section)") } else { String::new() }
+    );
+    let page = PAGE
+        .replace("__TITLE__", &escape(name))
+        .replace("__INFO__", &info)
+        .replace("__LINE__", &format!("[{}]", points.join(",")))
+        .replace("__GLB__", &base64(&glb));
+    let mut tmp_name = out.file_name().unwrap_or_default().to_os_string();
+    tmp_name.push(".part");
+    let tmp = out.with_file_name(tmp_name);
+    std::fs::write(&tmp, page).and_then(|()| std::fs::rename(&tmp, out)).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        format!("{}: {e}", out.display())
+    })?;
+    Ok(format!("{}: {} vertices, {} triangles", out.display(), mesh.positions.len(), mesh.triangles.len()))
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn base64_as_the_standard_gives_it() {
+        for (data, text) in
+            [("", ""), ("f", "Zg=="), ("fo", "Zm8="), ("foo", "Zm9v"), ("foob", "Zm9vYg=="), ("foobar", "Zm9vYmFy")]
+        {
+            assert_eq!(super::base64(data.as_bytes()), text);
+        }
+    }
+}
