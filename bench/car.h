@@ -1,5 +1,5 @@
 /*
- * The car of the vehicle benchmarks (bench/vehicle_bench.c, bench/vehicle_ab.c): a
+ * What the vehicle benchmarks (bench/vehicle_bench.c, bench/vehicle_ab.c) share: the car, a
  * compact car (wheelbase 2.64 m, track 1.55 m, the VW Golf's) whose rear axle drives
  * along the reference line at a constant speed, weaving 0.3 m to either side over 60 m,
  * in steps of 1 ms; at the road's end it starts over at its beginning. The wheels' u/v
@@ -8,6 +8,8 @@
 #ifndef OPENCRG_BENCH_CAR_H
 #define OPENCRG_BENCH_CAR_H
 #include <math.h>
+#include <stdlib.h>
+#include <string.h>
 
 #define WHEELBASE 2.64
 #define TRACK 1.55
@@ -70,5 +72,29 @@ static void path_free(struct Path *p)
     free(p->v);
     free(p->x);
     free(p->y);
+}
+
+/* Order of doubles, for qsort. */
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Whether `word` is one of the comma-separated words of the environment variable `var`
+ * (every word when it is not set): how the programs' cases are chosen. */
+static int chosen(const char *var, const char *word)
+{
+    const char *list = getenv(var);
+    if (!list)
+        return 1;
+    size_t len = strlen(word);
+    for (const char *p = list; *p;) {
+        size_t n = strcspn(p, ",");
+        if (n == len && !strncmp(p, word, n))
+            return 1;
+        p += n + (p[n] == ',');
+    }
+    return 0;
 }
 #endif

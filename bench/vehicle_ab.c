@@ -109,25 +109,7 @@ static double run(const struct Lib *l, enum Call c, const struct Path *p, long k
     return t * 1e9 / ((double)(k1 - k0) * WHEELS);
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 static double at(double *sorted, int n, double q) { return sorted[(int)(q * (n - 1) + 0.5)]; }
-
-static int chosen(const char *var, const char *word)
-{
-    const char *list = getenv(var);
-    if (!list)
-        return 1;
-    size_t n = strlen(word);
-    for (const char *s = list; (s = strstr(s, word)); s += n)
-        if ((s == list || s[-1] == ',') && (s[n] == 0 || s[n] == ','))
-            return 1;
-    return 0;
-}
 
 int main(int argc, char **argv)
 {

@@ -202,12 +202,6 @@ static int cmp_u32(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 /* The timer's own cost in ticks: the median of many empty measurements. */
 static uint32_t g_tick_cost;
 static void measure_tick_cost(void)
@@ -364,23 +358,6 @@ static void threaded_case(enum Call c, double speed, int threads)
     free(ns);
     free(t);
     free(cars);
-}
-
-/* Whether `word` is in the comma-separated list in environment variable `var` (or the
- * variable is unset). */
-static int chosen(const char *var, const char *word)
-{
-    const char *list = getenv(var);
-    if (!list)
-        return 1;
-    size_t len = strlen(word);
-    for (const char *p = list; *p;) {
-        size_t n = strcspn(p, ",");
-        if (n == len && !strncmp(p, word, n))
-            return 1;
-        p += n + (p[n] == ',');
-    }
-    return 0;
 }
 
 int main(int argc, char **argv)

@@ -3,31 +3,46 @@
 //! normal map (PNG).
 
 use opencrg::mesh::grid_mesh;
-use opencrg::mesh_files::{write_mesh, MeshFormat};
+use opencrg::mesh_files::{write_mesh, write_whole, MeshFormat};
 use opencrg::ContactPoint;
-use std::io::Write;
 use std::path::Path;
 
-/// A u or v range given as `A:B`.
-pub fn parse_range(text: &str, what: &str) -> Result<(f64, f64), String> {
+/// The u and v ranges of `export` and `view`.
+#[derive(clap::Args)]
+pub struct Ranges {
+    /// Only the grid nodes with u in FROM:TO [m].
+    #[arg(long, allow_hyphen_values = true)]
+    u: Option<String>,
+    /// Only the long sections with v in FROM:TO [m].
+    #[arg(long, allow_hyphen_values = true)]
+    v: Option<String>,
+}
+
+/// A u or v range, as (from, to) in m.
+pub type Range = Option<(f64, f64)>;
+
+impl Ranges {
+    /// The u and v ranges given (`None` where not given).
+    pub fn parse(&self) -> Result<(Range, Range), String> {
+        Ok((parse_range(self.u.as_deref(), "u")?, parse_range(self.v.as_deref(), "v")?))
+    }
+}
+
+/// A range given as `A:B`.
+fn parse_range(text: Option<&str>, what: &str) -> Result<Range, String> {
+    let Some(text) = text else { return Ok(None) };
     let bad = || format!("--{what} '{text}': expected FROM:TO in metres");
     let (a, b) = text.split_once(':').ok_or_else(bad)?;
     let (a, b): (f64, f64) = (a.trim().parse().map_err(|_| bad())?, b.trim().parse().map_err(|_| bad())?);
     if a.is_finite() && b.is_finite() {
-        Ok((a, b))
+        Ok(Some((a, b)))
     } else {
         Err(bad())
     }
 }
 
 /// Writes the export `out` names by its extension.
-pub fn export(
-    cp: &ContactPoint,
-    out: &Path,
-    u: Option<(f64, f64)>,
-    v: Option<(f64, f64)>,
-    normal_map: bool,
-) -> Result<String, String> {
+pub fn export(cp: &ContactPoint, out: &Path, u: Range, v: Range, normal_map: bool) -> Result<String, String> {
     let mesh = grid_mesh(cp, u, v).map_err(|e| e.to_string())?;
     let is_png = out.extension().and_then(|e| e.to_str()).is_some_and(|e| e.eq_ignore_ascii_case("png"));
     if is_png {
@@ -48,7 +63,8 @@ pub fn export(
     Ok(format!("{}: {} vertices, {} triangles", out.display(), mesh.positions.len(), mesh.triangles.len()))
 }
 
-/// A PNG of `width` x `height` pixels with `channels`, `bits` deep, and text chunks.
+/// A PNG of `width` x `height` pixels with `channels`, `bits` deep, and text chunks,
+/// written whole or not at all.
 fn write_png(
     out: &Path,
     width: usize,
@@ -58,30 +74,18 @@ fn write_png(
     texts: &[(&str, String)],
     data: &[u8],
 ) -> Result<(), String> {
-    let fail = |e: &dyn std::fmt::Display| format!("{}: {e}", out.display());
-    let mut tmp_name = out.file_name().unwrap_or_default().to_os_string();
-    tmp_name.push(".part");
-    let tmp = out.with_file_name(tmp_name);
-    let written = (|| -> Result<(), String> {
-        let file = std::fs::File::create(&tmp).map_err(|e| fail(&e))?;
-        let mut w = std::io::BufWriter::new(file);
-        let mut encoder = png::Encoder::new(&mut w, width as u32, height as u32);
+    write_whole(out, |w| {
+        let mut encoder = png::Encoder::new(w, width as u32, height as u32);
         encoder.set_color(colour);
         encoder.set_depth(bits);
         for (key, value) in texts {
-            encoder.add_text_chunk(key.to_string(), value.clone()).map_err(|e| fail(&e))?;
+            encoder.add_text_chunk(key.to_string(), value.clone())?;
         }
-        let mut writer = encoder.write_header().map_err(|e| fail(&e))?;
-        writer.write_image_data(data).map_err(|e| fail(&e))?;
-        writer.finish().map_err(|e| fail(&e))?;
-        w.flush().map_err(|e| fail(&e))?;
-        drop(w);
-        std::fs::rename(&tmp, out).map_err(|e| fail(&e))
-    })();
-    if written.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    written
+        let mut writer = encoder.write_header()?;
+        writer.write_image_data(data)?;
+        Ok(writer.finish()?)
+    })
+    .map_err(|e| e.to_string())
 }
 
 /// The pixel of node (i along u, j across): u runs left to right, v bottom to top (the

@@ -93,12 +93,8 @@ enum Command {
         road: PathBuf,
         /// The file to write; its extension names the format.
         output: PathBuf,
-        /// Only the grid nodes with u in FROM:TO [m].
-        #[arg(long, allow_hyphen_values = true)]
-        u: Option<String>,
-        /// Only the long sections with v in FROM:TO [m].
-        #[arg(long, allow_hyphen_values = true)]
-        v: Option<String>,
+        #[command(flatten)]
+        ranges: export::Ranges,
         /// With a .png output: a normal map instead of a height map.
         #[arg(long)]
         normal_map: bool,
@@ -111,12 +107,8 @@ enum Command {
         road: PathBuf,
         /// The HTML file to write.
         output: PathBuf,
-        /// Only the grid nodes with u in FROM:TO [m].
-        #[arg(long, allow_hyphen_values = true)]
-        u: Option<String>,
-        /// Only the long sections with v in FROM:TO [m].
-        #[arg(long, allow_hyphen_values = true)]
-        v: Option<String>,
+        #[command(flatten)]
+        ranges: export::Ranges,
         /// Largest number of grid nodes shown (more: every k-th cross section).
         #[arg(long, default_value_t = 1_000_000)]
         max_vertices: usize,
@@ -370,17 +362,15 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
             };
             picture.write_png(&output)?;
         }
-        Command::Export { road, output, u, v, normal_map, options } => {
-            let u = u.as_deref().map(|t| export::parse_range(t, "u")).transpose()?;
-            let v = v.as_deref().map(|t| export::parse_range(t, "v")).transpose()?;
+        Command::Export { road, output, ranges, normal_map, options } => {
+            let (u, v) = ranges.parse()?;
             let cp = contact_point(&road, &options)?;
             let done =
                 export::export(&cp, &output, u, v, normal_map).map_err(|e| format!("{}: {e}", road.display()))?;
             eprintln!("{done}");
         }
-        Command::View { road, output, u, v, max_vertices, options } => {
-            let u = u.as_deref().map(|t| export::parse_range(t, "u")).transpose()?;
-            let v = v.as_deref().map(|t| export::parse_range(t, "v")).transpose()?;
+        Command::View { road, output, ranges, max_vertices, options } => {
+            let (u, v) = ranges.parse()?;
             let cp = contact_point(&road, &options)?;
             let name = road.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
             let done =

@@ -3,9 +3,11 @@
 //! reference line. Roads of more than `max_vertices` grid nodes are shown on every k-th
 //! cross section.
 
+use crate::export::Range;
 use opencrg::mesh::grid_mesh_every;
-use opencrg::mesh_files::{write_mesh_to, MeshFormat};
+use opencrg::mesh_files::{write_mesh_to, write_whole, MeshFormat};
 use opencrg::ContactPoint;
+use std::io::Write;
 use std::path::Path;
 
 /// The viewer page; `__TITLE__`, `__INFO__`, `__GLB__` and `__LINE__` are filled in.
@@ -39,8 +41,8 @@ pub fn view(
     cp: &ContactPoint,
     name: &str,
     out: &Path,
-    u: Option<(f64, f64)>,
-    v: Option<(f64, f64)>,
+    u: Range,
+    v: Range,
     max_vertices: usize,
 ) -> Result<String, String> {
     let road = cp.road();
@@ -70,13 +72,7 @@ pub fn view(
         .replace("__INFO__", &info)
         .replace("__LINE__", &format!("[{}]", points.join(",")))
         .replace("__GLB__", &base64(&glb));
-    let mut tmp_name = out.file_name().unwrap_or_default().to_os_string();
-    tmp_name.push(".part");
-    let tmp = out.with_file_name(tmp_name);
-    std::fs::write(&tmp, page).and_then(|()| std::fs::rename(&tmp, out)).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        format!("{}: {e}", out.display())
-    })?;
+    write_whole(out, |w| w.write_all(page.as_bytes())).map_err(|e| e.to_string())?;
     Ok(format!("{}: {} vertices, {} triangles", out.display(), mesh.positions.len(), mesh.triangles.len()))
 }
 

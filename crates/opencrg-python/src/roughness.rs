@@ -69,8 +69,7 @@ pub(crate) fn iri<'py>(
         return Err(PyValueError::new_err(format!("segment length {segment} m; it must be positive")));
     }
     let length = z.len().saturating_sub(1) as f64 * dx;
-    let count = ((length / segment) - 1e-9).ceil().max(1.0) as usize;
-    let parts = (0..count).map(|k| r.iri_between(k as f64 * segment, (k + 1) as f64 * segment).unwrap_or(f64::NAN));
+    let parts = crg::iri::segment_iris(&[(0.0, &r)], length, segment).into_iter().map(|x| x.unwrap_or(f64::NAN));
     (r.iri(), PyArray1::from_iter(py, parts)).into_bound_py_any(py)
 }
 

@@ -35,14 +35,14 @@ pub const INITIAL_LENGTH: f64 = 11.0;
 
 /// The quarter car advanced by one sample interval: `x ← st·x + pr·slope`.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct QuarterCar {
+pub(crate) struct QuarterCar {
     st: [[f64; 4]; 4],
     pr: [f64; 4],
 }
 
 impl QuarterCar {
     /// The golden car stepping `dx` metres at 80 km/h.
-    pub fn golden(dx: f64) -> Self {
+    pub(crate) fn golden(dx: f64) -> Self {
         // The system matrix and the input column, states (zs, zs', zu, zu'), augmented
         // with a zero row so that one exponential gives the transition and the response
         // to an input held over the interval.
@@ -66,7 +66,7 @@ impl QuarterCar {
 
     /// Advances `x` by one interval with the input `slope`.
     #[inline]
-    pub fn step(&self, x: &mut [f64; 4], slope: f64) {
+    pub(crate) fn step(&self, x: &mut [f64; 4], slope: f64) {
         let old = *x;
         for (xi, (row, pr)) in x.iter_mut().zip(self.st.iter().zip(self.pr)) {
             *xi = row[0] * old[0] + row[1] * old[1] + row[2] * old[2] + row[3] * old[3] + pr * slope;
@@ -163,6 +163,23 @@ impl Response {
 /// point, counts as the 2.5 it stands for), at least 1.
 pub fn base_samples(dx: f64) -> usize {
     ((AVERAGE_BASE / dx * (1.0 + 1e-12)).round() as usize).max(1)
+}
+
+/// The IRI in m/km of each `segment` metres of a track `length` m long (the last segment
+/// ends at the track's end), over the steps of `runs`: responses with where their first
+/// sample lies (m from the track's start). A step counts in the segment its position
+/// (see [`Response::position`]) falls in; `None` for a segment without steps.
+pub fn segment_iris(runs: &[(f64, &Response)], length: f64, segment: f64) -> Vec<Option<f64>> {
+    let count = (length / segment - 1e-9).ceil().max(1.0) as usize;
+    let mut sums = vec![(0.0, 0usize); count];
+    for (start, response) in runs {
+        for (i, rs) in response.rectified.iter().enumerate() {
+            let k = (((start + response.position(i)) / segment).floor().max(0.0) as usize).min(count - 1);
+            sums[k].0 += rs;
+            sums[k].1 += 1;
+        }
+    }
+    sums.iter().map(|&(sum, n)| (n > 0).then(|| 1000.0 * sum / n as f64)).collect()
 }
 
 /// Drives the golden car along `profile` (elevations in m, `dx` m apart, all finite).

@@ -113,32 +113,18 @@ pub fn roughness(road: &Arc<Road>, tracks: &[f64], segment: f64) -> Result<Vec<T
             }
             let steps: usize = driven.iter().map(|(_, r)| r.rectified.len()).sum();
             let total: f64 = driven.iter().flat_map(|(_, r)| &r.rectified).sum();
-            let segments = segments_of(&driven, u_first, u_last, du, segment);
+            let runs: Vec<(f64, &iri::Response)> = driven.iter().map(|(start, r)| (*start as f64 * du, r)).collect();
+            let segments = iri::segment_iris(&runs, u_last - u_first, segment)
+                .into_iter()
+                .enumerate()
+                .map(|(k, iri)| Segment {
+                    u_start: u_first + k as f64 * segment,
+                    u_end: (u_first + (k + 1) as f64 * segment).min(u_last),
+                    iri,
+                })
+                .collect();
             let psd = psd::spectrum(&z[longest.clone()], du).map_err(|e| too_short("too short for the density", e))?;
             Ok(Track { v, iri: 1000.0 * total / steps as f64, segments, psd, skipped })
-        })
-        .collect()
-}
-
-/// The IRI per `segment` metres from `u_first` (the last segment ends at `u_last`), over
-/// the steps of every driven run.
-fn segments_of(driven: &[(usize, iri::Response)], u_first: f64, u_last: f64, du: f64, segment: f64) -> Vec<Segment> {
-    let count = ((u_last - u_first) / segment - 1e-9).ceil().max(1.0) as usize;
-    let mut sums = vec![(0.0, 0usize); count];
-    for (start, response) in driven {
-        for (i, rs) in response.rectified.iter().enumerate() {
-            let along = *start as f64 * du + response.position(i);
-            let k = ((along / segment).floor().max(0.0) as usize).min(count - 1);
-            sums[k].0 += rs;
-            sums[k].1 += 1;
-        }
-    }
-    sums.iter()
-        .enumerate()
-        .map(|(k, &(sum, n))| Segment {
-            u_start: u_first + k as f64 * segment,
-            u_end: (u_first + (k + 1) as f64 * segment).min(u_last),
-            iri: (n > 0).then(|| 1000.0 * sum / n as f64),
         })
         .collect()
 }

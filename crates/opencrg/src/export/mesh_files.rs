@@ -6,6 +6,7 @@
 
 use crate::error::{Error, Result};
 use crate::mesh::Mesh;
+use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::Path;
 
@@ -37,20 +38,25 @@ impl MeshFormat {
 
 /// Writes `mesh` to `path` in `format`.
 pub fn write_mesh(mesh: &Mesh, path: &Path, format: MeshFormat) -> Result<()> {
-    let err = |source| Error::Write { path: path.to_path_buf(), source };
+    write_whole(path, |out| write_mesh_to(mesh, out, format))
+}
+
+/// Writes a file whole or not at all: `write` fills a temporary file beside `path`, which
+/// is then renamed to it; on any error the temporary file is removed and `path` untouched.
+pub fn write_whole(path: &Path, write: impl FnOnce(&mut BufWriter<File>) -> io::Result<()>) -> Result<()> {
     let mut tmp_name = path.file_name().unwrap_or_default().to_os_string();
     tmp_name.push(".part");
     let tmp = path.with_file_name(tmp_name);
     let written = (|| {
-        let mut out = BufWriter::with_capacity(1 << 20, std::fs::File::create(&tmp)?);
-        write_mesh_to(mesh, &mut out, format)?;
+        let mut out = BufWriter::with_capacity(1 << 20, File::create(&tmp)?);
+        write(&mut out)?;
         out.into_inner().map_err(|e| e.into_error())?.sync_all()?;
         std::fs::rename(&tmp, path)
     })();
     if written.is_err() {
         let _ = std::fs::remove_file(&tmp);
     }
-    written.map_err(err)
+    written.map_err(|source| Error::Write { path: path.to_path_buf(), source })
 }
 
 /// Writes `mesh` in `format` to any writer.
