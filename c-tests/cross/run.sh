@@ -129,10 +129,27 @@ ok "messages on stderr, the program's output alone on stdout"
 # The conformance suite in both profiles.
 conformance="$root/../shared/conformance/run.sh"
 [ -f "$conformance" ] || { echo "cross $platform: $conformance not found" >&2; exit 1; }
+# Under an emulator a client now and then dies without answering (seen under wine: no
+# output, exit status 1, once in some dozen runs of 464 clients). A profile whose only
+# failures are such runs is run once more, saying so; different answers fail at once.
+conformance_run() {
+    rm -rf "$work/conformance-$1"
+    CC=$cc CONFORMANCE_RUNNER="${run[*]}" CONFORMANCE_PROFILE=$1 \
+        sh "$conformance" include "$shared" "$work/conformance-$1" >"$work/conformance-$1.log" 2>&1 || true
+    grep -q '^232 passed, 0 failed$' "$work/conformance-$1.log"
+}
 for profile in current 2.0.1; do
-    CC=$cc CONFORMANCE_RUNNER="${run[*]}" CONFORMANCE_PROFILE=$profile \
-        sh "$conformance" include "$shared" "$work/conformance-$profile" >"$work/conformance-$profile.log" 2>&1 || true
-    grep -q '^232 passed, 0 failed$' "$work/conformance-$profile.log" || { tail -20 "$work/conformance-$profile.log"; exit 1; }
+    if ! conformance_run $profile; then
+        died=$(grep -l 'the client exited with status' "$work/conformance-$profile"/*.err 2>/dev/null | wc -l)
+        failed=$(grep -c '^FAIL ' "$work/conformance-$profile.log" || true)
+        if [ "$died" -eq 0 ] || [ "$died" -ne "$failed" ]; then
+            tail -20 "$work/conformance-$profile.log"
+            exit 1
+        fi
+        echo "cross $platform: $died client(s) of the $profile profile died under the emulator without answering:" \
+            "$(grep -h 'the client exited' "$work/conformance-$profile"/*.err | head -3 | tr '\n' ' ')- running the profile again"
+        conformance_run $profile || { tail -20 "$work/conformance-$profile.log"; exit 1; }
+    fi
     ok "conformance ($profile profile): $(tail -1 "$work/conformance-$profile.log")"
 done
 
