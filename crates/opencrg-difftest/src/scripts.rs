@@ -162,11 +162,13 @@ pub fn generate(rng: &mut Rng) -> String {
         let (x, y) = (rng.range(-1e4, 1e4), rng.range(-1e4, 1e4));
         line(&mut s, format!("xy {x:?} {y:?}"));
     }
-    // Paths: small steps along u with a slowly changing v, forwards or backwards.
+    // Paths: small steps along u with a slowly changing v, forwards or backwards; some
+    // so small that many steps fall in one grid cell (a wheel at walking pace).
     for _ in 0..rng.int(1, 3) {
         let steps = rng.int(10, 60);
         let (mut fu, fv0) = (rng.range(-0.1, 1.1), rng.range(-0.2, 1.2));
-        let du = rng.range(-0.05, 0.05);
+        let reach = if rng.chance(0.5) { 0.05 } else { 0.002 };
+        let du = rng.range(-reach, reach);
         for k in 0..steps {
             let fv = fv0 + 0.1 * (k as f64 * 0.2).sin();
             line(&mut s, format!("qf {fu:?} {fv:?}"));

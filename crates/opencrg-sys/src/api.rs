@@ -827,7 +827,7 @@ pub unsafe extern "C" fn crgEvaluv2z(cpId: c_int, u: f64, v: f64, z: *mut f64) -
     // The common case first: the calling thread owns the contact point and (u, v) is
     // inside the road. Nothing in it can panic, so it needs no guard, and it makes no
     // call, which keeps it short; everything else takes the general way below.
-    if let Some(Some(value)) = registry::with_owned_cp(cpId, |cp| cp.uv_to_z_plain(u, v)) {
+    if let Some(Some(value)) = registry::with_owned_cp_mut(cpId, |cp| cp.uv_to_z_plain(u, v)) {
         *z = value;
         return 1;
     }

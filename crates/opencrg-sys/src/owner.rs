@@ -84,16 +84,8 @@ impl<T> OwnedCell<T> {
         f(unsafe { &mut *self.value.get() })
     }
 
-    /// Runs `f` when this thread owns the cell; `None` (without running `f`) otherwise:
-    /// no lock and no call.
-    #[inline(always)]
-    pub(crate) fn with_owned<R>(&self, f: impl FnOnce(&T) -> R) -> Option<R> {
-        let _busy = self.enter_as_owner(thread_id())?;
-        // SAFETY: the owner's busy mark is set while ownership stands.
-        Some(f(unsafe { &*self.value.get() }))
-    }
-
-    /// [`OwnedCell::with_owned`] with exclusive access to the value.
+    /// Runs `f` with exclusive access to the value when this thread owns the cell;
+    /// `None` (without running `f`) otherwise: no lock and no call.
     #[inline(always)]
     pub(crate) fn with_owned_mut<R>(&self, f: impl FnOnce(&mut T) -> R) -> Option<R> {
         let _busy = self.enter_as_owner(thread_id())?;
@@ -215,17 +207,17 @@ mod tests {
         let owner_path = crate::barrier::available();
         let cell = OwnedCell::new(0u64);
         assert_eq!(cell.owner(), 0);
-        assert_eq!(cell.with_owned(|v| *v), None, "no owner yet");
+        assert_eq!(cell.with_owned_mut(|v| *v), None, "no owner yet");
         for _ in 0..OWNER_STREAK {
             cell.with_mut(bump);
         }
         assert_eq!(cell.owner(), if owner_path { thread_id() } else { 0 });
-        assert_eq!(cell.with_owned(|v| *v), owner_path.then_some(u64::from(OWNER_STREAK)));
+        assert_eq!(cell.with_owned_mut(|v| *v), owner_path.then_some(u64::from(OWNER_STREAK)));
         std::thread::scope(|s| {
             s.spawn(|| cell.with_mut(bump));
         });
         assert_eq!(cell.owner(), 0, "another thread's access revokes the ownership");
-        assert_eq!(cell.with_owned(|v| *v), None);
+        assert_eq!(cell.with_owned_mut(|v| *v), None);
         assert_eq!(cell.lock().clone(), u64::from(OWNER_STREAK + 1));
     }
 
@@ -258,6 +250,6 @@ mod tests {
         }
         cell.lock().disown();
         assert_eq!(cell.owner(), 0);
-        assert_eq!(cell.with_owned(|v| *v), None);
+        assert_eq!(cell.with_owned_mut(|v| *v), None);
     }
 }

@@ -157,13 +157,6 @@ pub fn with_cp<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R) -> Option<R
 /// `f`) otherwise: the first try of the hottest entry points, with no lock and no
 /// call. `f` must not panic (this runs outside any panic guard).
 #[inline(always)]
-pub fn with_owned_cp<R>(id: c_int, f: impl FnOnce(&ContactPoint) -> R) -> Option<R> {
-    let s = slot_of(id)?;
-    s.cp.with_owned(|cp| cp.as_ref().map(f)).flatten()
-}
-
-/// [`with_owned_cp`] with the contact point to change (its x/y search history).
-#[inline(always)]
 pub fn with_owned_cp_mut<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R) -> Option<R> {
     let s = slot_of(id)?;
     s.cp.with_owned_mut(|cp| cp.as_mut().map(f)).flatten()

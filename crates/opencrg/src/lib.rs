@@ -50,8 +50,10 @@ mod query {
     pub(crate) mod check;
     pub(crate) mod contact;
     pub(crate) mod eval;
+    pub(crate) mod interpolation;
     pub(crate) mod modifiers;
     pub(crate) mod normal;
+    pub(crate) mod plain;
     pub(crate) mod search;
 }
 mod analysis {
@@ -73,7 +75,7 @@ use export::gltf;
 pub use export::{mesh, mesh_files};
 pub use model::{grid, header, refline, report};
 use model::{road, sample_index};
-use query::{contact, eval, normal, search};
+use query::{contact, eval, interpolation, normal, plain, search};
 pub use read::reader;
 use read::{records, syntax};
 pub use write::writer;

@@ -283,14 +283,16 @@ fn plain_elevation_matches_the_general_one() {
         for i in -20..=220 {
             for j in -20..=120 {
                 let (u, v) = (u0 + (u1 - u0) * f64::from(i) / 200.0, v0 + (v1 - v0) * f64::from(j) / 100.0);
+                // The last cross and long section are left to the general path.
                 let inside = (u0..=u1).contains(&u) && (v0..=v1).contains(&v);
+                let before_last = u < u1 && v < v1;
                 match c.uv_to_z_plain(u, v) {
                     Some(z) => {
                         assert!(inside && !smoothing, "answered at ({u}, {v}), smoothing {smoothing}");
                         assert_eq!(z.to_bits(), c.uv_to_z(u, v).unwrap().to_bits(), "at ({u}, {v})");
                         plain += 1;
                     }
-                    None => assert!(!inside || smoothing, "no answer inside at ({u}, {v})"),
+                    None => assert!(!(inside && before_last) || smoothing, "no answer inside at ({u}, {v})"),
                 }
             }
         }

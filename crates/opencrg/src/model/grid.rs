@@ -65,6 +65,29 @@ fn c_index(x: f64) -> usize {
     }
 }
 
+/// Asks the processor to start loading the values of the cell whose first corner is at
+/// `p` in a grid whose long sections are `nu` values apart, a run of each of its two
+/// long sections, into the second-level cache: for a lookup that comes many others
+/// later (see `memory::prefetch_far`). The address is only computed, never read.
+#[inline(always)]
+pub(crate) fn prefetch_cell_far_from(p: *const f32, nu: usize) {
+    crate::memory::prefetch_far(p);
+    crate::memory::prefetch_far(p.wrapping_add(nu));
+}
+
+/// Asks the processor to start loading what a wheel moving along the road reads after
+/// the cell whose first corner is at `p` in a grid whose long sections are `nu` values
+/// apart: the following run of both long sections along u, and the long section beyond
+/// the cell's nearer side across it (`upper`: the side of the second long section). Not
+/// the cell itself: the lookup reads it at once. The addresses are only computed, never
+/// read.
+#[inline(always)]
+pub(crate) fn prefetch_path_from(p: *const f32, nu: usize, upper: bool) {
+    crate::memory::prefetch(p.wrapping_add(AHEAD));
+    crate::memory::prefetch(p.wrapping_add(nu + AHEAD));
+    crate::memory::prefetch(if upper { p.wrapping_add(2 * nu) } else { p.wrapping_sub(nu) });
+}
+
 impl Clone for Grid {
     fn clone(&self) -> Self {
         Grid { z: crate::memory::large_copy(&self.z), v: self.v.clone(), v_table: self.v_table.clone(), ..*self }
@@ -72,17 +95,6 @@ impl Clone for Grid {
 }
 
 impl Grid {
-    /// Asks the processor to start loading the values of the cell whose first corner
-    /// is (`iu`, `iv`), a run of each of its two long sections, into the second-level
-    /// cache: for a lookup that comes many others later (see `memory::prefetch_far`).
-    /// The address is only computed, never read.
-    #[inline(always)]
-    pub(crate) fn prefetch_cell_far(&self, iu: usize, iv: usize) {
-        let p = self.z.as_ptr().wrapping_add(iv.wrapping_mul(self.nu).wrapping_add(iu));
-        crate::memory::prefetch_far(p);
-        crate::memory::prefetch_far(p.wrapping_add(self.nu));
-    }
-
     /// Asks the processor to start loading the values of the cell whose first corner
     /// is (`iu`, `iv`). The address is only computed, never read.
     #[inline(always)]
@@ -92,17 +104,10 @@ impl Grid {
         crate::memory::prefetch(p.wrapping_add(self.nu));
     }
 
-    /// Asks the processor to start loading what a wheel moving along the road reads
-    /// after the cell whose first corner is (`iu`, `iv`): the following run of both
-    /// long sections along u, and the long section beyond the cell's nearer side across
-    /// it (`upper`: the side of `iv + 1`). Not the cell itself: the lookup reads it at
-    /// once.
+    /// [`prefetch_path_from`] for the cell whose first corner is (`iu`, `iv`).
     #[inline(always)]
     pub(crate) fn prefetch_path(&self, iu: usize, iv: usize, upper: bool) {
-        let p = self.z.as_ptr().wrapping_add(iv.wrapping_mul(self.nu).wrapping_add(iu));
-        crate::memory::prefetch(p.wrapping_add(AHEAD));
-        crate::memory::prefetch(p.wrapping_add(self.nu + AHEAD));
-        crate::memory::prefetch(if upper { p.wrapping_add(2 * self.nu) } else { p.wrapping_sub(self.nu) });
+        prefetch_path_from(self.z.as_ptr().wrapping_add(iv.wrapping_mul(self.nu).wrapping_add(iu)), self.nu, upper);
     }
 
     /// The z value at (u index, v index), without the mean offset.

@@ -6,7 +6,7 @@
 
 use crate::contact::ContactPoint;
 use crate::error::Result;
-use crate::eval::PlainCell;
+use crate::plain::PlainCell;
 
 /// How many points the elevation batch locates at a time. Blocks of 16 with 3 blocks of
 /// lead were the best of the 4 to 32 points and 1 to 8 blocks measured on the 80 MB
@@ -53,14 +53,13 @@ impl ContactPoint {
     pub fn uv_to_z_many(&self, u: &[f64], v: &[f64], z: &mut [f64]) -> usize {
         let n = count([u, v], &[&mut *z]);
         let (u, v, z) = (&u[..n], &v[..n], &mut z[..n]);
-        let road = &**self.road();
         // The cells of the points from `start` on, loading started; a point outside the
         // lean path's case gets `None` and takes the general path when its turn comes.
         let locate = |start: usize, cells: &mut [Option<PlainCell>; BLOCK]| {
             for ((cell, &u), &v) in cells.iter_mut().zip(&u[start..]).zip(&v[start..]) {
                 *cell = self.plain_cell(u, v);
                 if let Some(cell) = cell {
-                    cell.prefetch_far(road);
+                    self.plain_prefetch_far(cell);
                 }
             }
         };
@@ -75,8 +74,8 @@ impl ContactPoint {
             locate((start + LEAD * BLOCK).min(n), &mut ring[(b + LEAD) % RING]);
             let end = (start + BLOCK).min(n);
             for ((out, cell), i) in z[start..end].iter_mut().zip(&ring[b % RING]).zip(start..) {
-                let value = match cell.and_then(|cell| cell.elevation(road)) {
-                    Some(z) => Ok(z),
+                let value = match cell {
+                    Some(cell) => Ok(self.plain_elevation(cell)),
                     None => self.uv_to_z_general(u[i], v[i]),
                 };
                 [*out] = settle(value.map(|z| [z]), &mut ok);
@@ -112,7 +111,7 @@ impl ContactPoint {
         let mut ok = 0;
         // The point found last, its elevation still to compute.
         let mut pending: Option<(usize, f64, f64)> = None;
-        let mut finish = |cp: &Self, (i, u, v): (usize, f64, f64), z: &mut [f64]| {
+        let mut finish = |cp: &mut Self, (i, u, v): (usize, f64, f64), z: &mut [f64]| {
             [z[i]] = settle(cp.z_of_found(u, v).map(|z| [z]), &mut ok);
         };
         for i in 0..n {

@@ -1,7 +1,8 @@
 //! Contact points: a road, a set of options and a search history.
 
 use crate::error::{Error, Result};
-use crate::eval::{self, EvalOptions, PlainCell, PlainGrid};
+use crate::eval::{self, EvalOptions};
+use crate::plain::{CellTerms, PlainCell, PlainGrid};
 use crate::road::Road;
 use crate::search::{self, History, DEFAULT_HISTORY};
 use crate::settings::{opt, Settings};
@@ -38,6 +39,9 @@ pub struct ContactPoint {
     eval: EvalOptions,
     /// The common case of the elevation lookup, from `road` and `eval`.
     plain: PlainGrid,
+    /// The terms of the cell the last lookup of the common case read (through
+    /// [`ContactPoint::uv_to_z_plain`]), from `road`.
+    last: CellTerms,
     history: History,
 }
 
@@ -67,7 +71,7 @@ impl ContactPoint {
         let history = History::new(DEFAULT_HISTORY, DEFAULT_CLOSE * DEFAULT_CLOSE, DEFAULT_FAR * DEFAULT_FAR);
         let eval = EvalOptions::from(&options);
         let plain = PlainGrid::new(&road, &eval);
-        ContactPoint { road, options, eval, plain, history }
+        ContactPoint { road, options, eval, plain, last: CellTerms::NONE, history }
     }
 
     /// The road evaluated.
@@ -79,6 +83,7 @@ impl ContactPoint {
     /// applied); options and history are kept.
     pub fn set_road(&mut self, road: Arc<Road>) {
         self.plain = PlainGrid::new(&road, &self.eval);
+        self.last = CellTerms::NONE;
         self.road = road;
     }
 
@@ -93,6 +98,7 @@ impl ContactPoint {
         let r = f(&mut self.options);
         self.eval = EvalOptions::from(&self.options);
         self.plain = PlainGrid::new(&self.road, &self.eval);
+        self.last = CellTerms::NONE;
         r
     }
 
@@ -197,10 +203,18 @@ impl ContactPoint {
     fn uv_to_z_fetched(&self, u: f64, v: f64) -> Result<f64> {
         // The common case's lean path first (the same answers; measured 5-10 % faster
         // than the general path's own check for it), the general one for the rest.
-        if let Some(z) = self.plain.cell(u, v).and_then(|cell| cell.elevation(&self.road)) {
-            return Ok(z);
+        match self.plain.cell(u, v) {
+            Some(cell) => Ok(self.plain_elevation(&cell)),
+            None => self.uv_to_z_general(u, v),
         }
-        self.uv_to_z_general(u, v)
+    }
+
+    /// The elevation at a cell of the common case, read from the road.
+    #[inline(always)]
+    pub(crate) fn plain_elevation(&self, cell: &PlainCell) -> f64 {
+        // SAFETY: `plain` was made from `road`, which the contact point holds (the two
+        // change together), and the contact point's cells come from `plain`.
+        unsafe { self.plain.elevation(&self.plain.terms(cell), cell) }
     }
 
     /// [`ContactPoint::uv_to_z`] through the path that handles every case.
@@ -208,6 +222,13 @@ impl ContactPoint {
     pub(crate) fn uv_to_z_general(&self, u: f64, v: f64) -> Result<f64> {
         finite(u, v)?;
         elevation(eval::uv_to_z(&self.road, &self.eval, u, v))
+    }
+
+    /// Asks the processor to start loading a cell of the common case into the
+    /// second-level cache (see `PlainGrid::prefetch_far`).
+    #[inline(always)]
+    pub(crate) fn plain_prefetch_far(&self, cell: &PlainCell) {
+        self.plain.prefetch_far(cell);
     }
 
     /// The grid cell of (u, v) when the point is of the common case the elevation
@@ -225,10 +246,19 @@ impl ContactPoint {
     /// stack frame; not part of the supported Rust API.
     #[doc(hidden)]
     #[inline(always)]
-    pub fn uv_to_z_plain(&self, u: f64, v: f64) -> Option<f64> {
+    pub fn uv_to_z_plain(&mut self, u: f64, v: f64) -> Option<f64> {
         let cell = self.plain.cell(u, v)?;
-        cell.prefetch_path(&self.road);
-        cell.elevation(&self.road)
+        if self.last.of(&cell) {
+            // SAFETY: as in `plain_elevation`.
+            return Some(unsafe { self.plain.elevation(&self.last, &cell) });
+        }
+        self.plain.prefetch_path(&cell);
+        // SAFETY: as in `plain_elevation`.
+        let terms = unsafe { self.plain.terms(&cell) };
+        // SAFETY: as in `plain_elevation`.
+        let z = unsafe { self.plain.elevation(&terms, &cell) };
+        self.last = terms;
+        Some(z)
     }
 
     /// The C library's call-free path of the x/y calls: (u, v) of (x, y) when the lean
@@ -301,7 +331,7 @@ impl ContactPoint {
     /// supported Rust API.
     #[doc(hidden)]
     #[inline]
-    pub fn z_of_found(&self, u: f64, v: f64) -> Result<f64> {
+    pub fn z_of_found(&mut self, u: f64, v: f64) -> Result<f64> {
         match self.uv_to_z_plain(u, v) {
             Some(z) => Ok(z),
             None => elevation(eval::uv_to_z(&self.road, &self.eval, u, v)),
@@ -330,15 +360,24 @@ mod tests {
     }
 
     /// How many points over `u` in 0..=length (and v across the road and beyond) the
-    /// common case answers, each checked against the general path bit for bit.
-    fn plain_answers(c: &ContactPoint, length: f64) -> usize {
+    /// common case answers, each checked against the general path bit for bit, asked
+    /// twice and after a point of the same cell (its kept terms) and of another.
+    fn plain_answers(c: &mut ContactPoint, length: f64) -> usize {
         let mut answered = 0;
         for i in -10..=410 {
             for j in -12..=12 {
                 let (u, v) = (length * f64::from(i) / 400.0, f64::from(j) / 10.0);
-                if let Some(z) = c.uv_to_z_plain(u, v) {
+                let first = c.uv_to_z_plain(u, v);
+                let same_cell = c.uv_to_z_plain(u + 1e-9, v - 1e-9);
+                let again = c.uv_to_z_plain(u, v);
+                assert_eq!(first, again, "at ({u}, {v})");
+                if let Some(z) = first {
                     let general = c.uv_to_z_general(u, v).unwrap();
                     assert_eq!(z.to_bits(), general.to_bits(), "at ({u}, {v})");
+                    if let Some(z) = same_cell {
+                        let general = c.uv_to_z_general(u + 1e-9, v - 1e-9).unwrap();
+                        assert_eq!(z.to_bits(), general.to_bits(), "near ({u}, {v})");
+                    }
                     answered += 1;
                 }
             }
@@ -346,19 +385,21 @@ mod tests {
         answered
     }
 
-    /// The common case reads a copy of the road's geometry and the options: it must
-    /// follow both when they change.
+    /// The common case reads a copy of the road's geometry and the options, and keeps
+    /// the terms of its last cell: it must follow both when they change. It answers
+    /// inside the grid but not on its last cross and long section (the general path
+    /// does there).
     #[test]
     fn the_common_case_follows_the_road_and_the_options() {
         let mut c = ContactPoint::new(road(10.0, 0.1));
-        // Inside: u over 401 of the 421 steps, v over 21 of the 25.
-        assert_eq!(plain_answers(&c, 10.0), 401 * 21);
+        // Inside: u over 400 of the 421 steps, v over 20 of the 25.
+        assert_eq!(plain_answers(&mut c, 10.0), 400 * 20);
         assert_eq!(c.uv_to_z_plain(15.0, 0.0), None, "beyond the first road");
         c.set_road(road(20.0, -0.2));
-        assert_eq!(plain_answers(&c, 20.0), 401 * 21);
+        assert_eq!(plain_answers(&mut c, 20.0), 400 * 20);
         c.set_option_double(opt::SMOOTH_U_BEGIN, 2.0).unwrap();
-        assert_eq!(plain_answers(&c, 20.0), 0, "a smoothing zone takes the general path");
+        assert_eq!(plain_answers(&mut c, 20.0), 0, "a smoothing zone takes the general path");
         c.remove_option(opt::SMOOTH_U_BEGIN);
-        assert_eq!(plain_answers(&c, 20.0), 401 * 21);
+        assert_eq!(plain_answers(&mut c, 20.0), 400 * 20);
     }
 }

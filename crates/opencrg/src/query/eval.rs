@@ -5,6 +5,7 @@
 
 use crate::compat::Compat;
 use crate::grid::VLayout;
+use crate::interpolation::{bilinear, corner_terms, lerp_at, lerp_terms};
 use crate::refline::RefLine;
 use crate::road::Road;
 use crate::settings::{opt, BorderMode, Settings};
@@ -37,6 +38,13 @@ pub(crate) struct EvalOptions {
     /// The reference library's x/y search tests option id 1 (the u border mode) for
     /// the value 1 to choose its closed-track branch; kept for the same answers.
     pub(crate) closed_search: bool,
+}
+
+impl EvalOptions {
+    /// Whether neither smoothing zone is set.
+    pub(crate) fn no_smoothing(&self) -> bool {
+        self.no_smoothing
+    }
 }
 
 impl From<&Settings> for EvalOptions {
@@ -290,12 +298,7 @@ fn surface<const FU_IN_CELL: bool>(
         let (base, next) = (iv.wrapping_mul(g.nu).wrapping_add(iu), g.nu);
         let cell = g.z.get(base..)?.get(..next.wrapping_add(2))?;
         let (&[c00, c10], &[c01, c11]) = (cell.first_chunk::<2>()?, cell.last_chunk::<2>()?);
-        let z00 = f64::from(c00);
-        let z10 = f64::from(c10) - z00;
-        let mut z01 = f64::from(c01);
-        let z11 = f64::from(c11) - (z10 + z01);
-        z01 -= z00;
-        z = (z11 * fv + z10) * fu + z01 * fv + z00;
+        z = bilinear(&corner_terms(c00, c10, c01, c11), fu, fv);
         z += g.mean;
     }
     let fu = if FU_IN_CELL { fu } else { fu.clamp(0.0, 1.0) };
@@ -317,7 +320,7 @@ fn surface<const FU_IN_CELL: bool>(
 #[inline(always)]
 fn lerp(values: &[f64], i: usize, f: f64) -> Option<f64> {
     let &[a, b] = values.get(i..)?.first_chunk::<2>()?;
-    Some(a + f * (b - a))
+    Some(lerp_at(lerp_terms(a, b), f))
 }
 
 /// The v interval of an uneven grid holding `pos`, and the fraction within it.
@@ -347,97 +350,6 @@ fn u_cell(l: &RefLine, u: f64) -> (usize, f64) {
 fn v_cell(g: &crate::grid::Grid, v: f64) -> (usize, f64) {
     let mut fv = (v - g.v_first) / g.v_inc;
     (clamp_index_to(&mut fv, g.nv, g.last_frac), fv)
-}
-
-/// What the common case of an elevation lookup (inside an evenly spaced grid, no
-/// smoothing zone) reads to find its cell, copied out of the road and the options into
-/// the contact point: a lookup then finds its cell in one place next to the contact
-/// point's other state instead of through the road. Where the common case never applies
-/// (an uneven grid, a smoothing zone) its bounds are NaN: every comparison with them
-/// fails, so no point lies inside.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct PlainGrid {
-    u_first: f64,
-    u_last: f64,
-    u_inc: f64,
-    u_last_frac: f64,
-    nu: usize,
-    v_first: f64,
-    v_last: f64,
-    v_inc: f64,
-    v_last_frac: f64,
-    nv: usize,
-}
-
-impl PlainGrid {
-    /// The common case of `road` evaluated with `options`.
-    pub(crate) fn new(road: &Road, options: &EvalOptions) -> Self {
-        let (l, g) = (&road.line, &road.grid);
-        // Positive increments make every fraction of a point inside non-negative, which
-        // `upper_clamped_index` relies on.
-        let applies = options.no_smoothing && g.layout == VLayout::Indexed && l.u_inc > 0.0 && g.v_inc > 0.0;
-        let bound = |x: f64| if applies { x } else { f64::NAN };
-        PlainGrid {
-            u_first: bound(l.u_first),
-            u_last: bound(l.u_last),
-            u_inc: l.u_inc,
-            u_last_frac: l.last_frac,
-            nu: l.n,
-            v_first: bound(g.v_first),
-            v_last: bound(g.v_last),
-            v_inc: g.v_inc,
-            v_last_frac: g.last_frac,
-            nv: g.nv,
-        }
-    }
-
-    /// The cell of (u, v) when the point is of the common case; `None` otherwise (also
-    /// for NaN). The same cell [`uv_to_z`] finds for it.
-    #[inline(always)]
-    pub(crate) fn cell(&self, u: f64, v: f64) -> Option<PlainCell> {
-        if !(u >= self.u_first && u <= self.u_last && v >= self.v_first && v <= self.v_last) {
-            return None;
-        }
-        // Inside, u - u_first and v - v_first are not negative, nor are the fractions.
-        let mut fu = (u - self.u_first) / self.u_inc;
-        let iu = upper_clamped_index(&mut fu, self.nu, self.u_last_frac);
-        let mut fv = (v - self.v_first) / self.v_inc;
-        let iv = upper_clamped_index(&mut fv, self.nv, self.v_last_frac);
-        Some(PlainCell { iu, fu, iv, fv, v })
-    }
-}
-
-/// Where a point of the common case (inside an evenly spaced grid, no smoothing zone)
-/// lies: its cell's interval indices and fractions, and its v (for the banking).
-#[derive(Debug, Clone, Copy, Default)]
-pub(crate) struct PlainCell {
-    iu: usize,
-    fu: f64,
-    iv: usize,
-    fv: f64,
-    v: f64,
-}
-
-impl PlainCell {
-    /// Asks the processor to start loading the cell's grid values into the second-level
-    /// cache, for an evaluation many others later (the batch's blocks ahead).
-    #[inline(always)]
-    pub(crate) fn prefetch_far(&self, road: &Road) {
-        road.grid.prefetch_cell_far(self.iu, self.iv);
-    }
-
-    /// Asks the processor to start loading the cell's grid values, and the grid a wheel
-    /// moving on from here reads next (see `Grid::prefetch_path`).
-    #[inline(always)]
-    pub(crate) fn prefetch_path(&self, road: &Road) {
-        road.grid.prefetch_path(self.iu, self.iv, self.fv > 0.5);
-    }
-
-    /// The elevation of the surface at the point.
-    #[inline(always)]
-    pub(crate) fn elevation(&self, road: &Road) -> Option<f64> {
-        surface::<true>(road, self.iu, self.fu, self.iv, self.fv, self.v, true, true)
-    }
 }
 
 /// Elevation at (u, v) with the given options; `None` when a border mode refuses.

@@ -199,20 +199,22 @@ const LEAN_STEPS: usize = 32;
 /// Walks from point `k` to the segment `k - 1`..`k` whose normals enclose (x, y):
 /// forward while the point lies ahead of point `k`, then backward while it lies behind
 /// point `k - 1` (around a closed track, past its ends once). Returns `k` and how far
-/// the point lies ahead of point `k - 1` (see [`SearchPoint::ahead`]).
+/// the point lies ahead of points `k - 1` and `k` (see [`SearchPoint::ahead`]).
 ///
 /// `LEAN` gives up (`None`) where the general walk would go around a closed track's end
 /// or take more than [`LEAN_STEPS`] steps; otherwise both take the same steps. `pts`
 /// holds at least two points and `1 <= k < pts.len()`; the walk never panics.
 #[inline(always)]
-fn walk<const LEAN: bool>(pts: &[SearchPoint], closed: bool, mut k: usize, x: f64, y: f64) -> Option<(usize, f64)> {
+fn walk<const LEAN: bool>(pts: &[SearchPoint], closed: bool, mut k: usize, x: f64, y: f64) -> Option<Walked> {
     let n = pts.len();
     let ahead = |i: usize| pts.get(i).map(|p| p.ahead(x, y));
     let walk_limit = if LEAN { LEAN_STEPS } else { 2 * n + 4 };
     let mut turn = 0.0;
     let mut steps = 0;
+    let mut at_k;
     loop {
-        if !(ahead(k)? > 0.0) {
+        at_k = ahead(k)?;
+        if !(at_k > 0.0) {
             break;
         }
         steps += 1;
@@ -245,40 +247,56 @@ fn walk<const LEAN: bool>(pts: &[SearchPoint], closed: bool, mut k: usize, x: f6
             if LEAN && behind < 0.0 {
                 return None;
             }
-            return Some((k, behind));
+            return Some(Walked { k, behind, at_k });
         }
         if k > 1 {
             k -= 1;
+            at_k = behind;
         } else if closed {
             if LEAN {
                 return None;
             }
             if turn != 0.0 {
-                return Some((k, behind));
+                return Some(Walked { k, behind, at_k });
             }
             turn = ahead(n - 1)?;
             if turn >= 0.0 {
-                return Some((k, behind));
+                return Some(Walked { k, behind, at_k });
             }
             k = n - 1;
+            at_k = turn;
         } else {
-            return Some((k, behind));
+            return Some(Walked { k, behind, at_k });
         }
     }
 }
 
-/// (u, v) of (x, y) found on segment `k - 1`..`k` with `behind` (see [`walk`]): v along
-/// the segment's normal, u interpolated between the normals of its two points; then
-/// measured from an end point where u lies before the start or beyond the end. `None`
-/// only for a `k` outside the line.
+/// Where a [`walk`] ended: on segment `k - 1`..`k`, with how far the point lies ahead
+/// of point `k - 1` (`behind`) and of point `k` (`at_k`).
+#[derive(Debug, Clone, Copy)]
+struct Walked {
+    k: usize,
+    behind: f64,
+    at_k: f64,
+}
+
+/// (u, v) of (x, y) found by a [`walk`]: v along the segment's normal, u interpolated
+/// between the normals of its two points; then measured from an end point where u
+/// lies before the start or beyond the end. `None` only for a walk ending outside the
+/// line.
 #[inline(always)]
-fn solve(line: &RefLine, closed_search: bool, k: usize, behind: f64, x: f64, y: f64) -> Option<(f64, f64)> {
+fn solve(line: &RefLine, closed_search: bool, w: Walked, x: f64, y: f64) -> Option<(f64, f64)> {
+    let k = w.k;
     let (a, b) = (line.search.get(k - 1)?, line.search.get(k)?);
     let (x2x1, y2y1) = (b.x - a.x, b.y - a.y);
     let (xxx1, yyy1) = (x - a.x, y - a.y);
     let v = (x2x1 * yyy1 - y2y1 * xxx1) / line.seg_len.get(k - 1)?;
-    let ta = behind / (a.dx * x2x1 + a.dy * y2y1);
-    let tb = (b.dx * (b.x - x) + b.dy * (b.y - y)) / (b.dx * x2x1 + b.dy * y2y1);
+    let ta = w.behind / (a.dx * x2x1 + a.dy * y2y1);
+    // How far the point lies behind point k: `b.dx (b.x - x) + b.dy (b.y - y)`, which
+    // is `-at_k` exactly (IEEE subtraction and multiplication are symmetric under
+    // negation), except for the sign of a zero, which `ta / (ta + tb)` never shows (a
+    // zero `tb` leaves `ta + tb` at `ta`, and with `ta` zero too the quotient is NaN).
+    let tb = -w.at_k / (b.dx * x2x1 + b.dy * y2y1);
     let du = ta / (ta + tb) * line.u_inc;
     let u = (k - 1) as i64 as f64 * line.u_inc + du + line.u_first;
     Some(beyond_ends(line, closed_search, x, y, u, v))
@@ -331,9 +349,9 @@ pub(crate) fn xy_to_uv_lean(
     let n = line.n;
     let pts = line.search.get(..n)?;
     let start = history.recent_within(x, y)?.min(n - 1).max(1);
-    let (k, behind) = walk::<true>(pts, line.closed.is_some(), start, x, y)?;
-    let found = solve(line, closed_search, k, behind, x, y)?;
-    history.record(x, y, (k + 1).min(n - 1));
+    let walked = walk::<true>(pts, line.closed.is_some(), start, x, y)?;
+    let found = solve(line, closed_search, walked, x, y)?;
+    history.record(x, y, (walked.k + 1).min(n - 1));
     Some(found)
 }
 
@@ -355,7 +373,7 @@ pub(crate) fn xy_to_uv(
     };
     let pts = &line.search[..n];
     let found = walk::<false>(pts, line.closed.is_some(), start.max(1), x, y)
-        .and_then(|(k, behind)| Some((k, solve(line, closed_search, k, behind, x, y)?)));
+        .and_then(|w| Some((w.k, solve(line, closed_search, w, x, y)?)));
     match found {
         Some((k, found)) => {
             history.record(x, y, (k + 1).min(n - 1));
