@@ -323,23 +323,10 @@ impl Road {
     ) -> PyResult<Bound<'py, PyDict>> {
         let mesh = self.mesh(py, u, v, options)?;
         let d = PyDict::new(py);
-        let rows = |n: usize, k: usize| [n, k];
-        d.set_item(
-            "positions",
-            PyArray1::from_iter(py, mesh.positions.iter().flatten().copied()).reshape(rows(mesh.positions.len(), 3))?,
-        )?;
-        d.set_item(
-            "normals",
-            PyArray1::from_iter(py, mesh.normals.iter().flatten().copied()).reshape(rows(mesh.normals.len(), 3))?,
-        )?;
-        d.set_item(
-            "texcoords",
-            PyArray1::from_iter(py, mesh.texcoords.iter().flatten().copied()).reshape(rows(mesh.texcoords.len(), 2))?,
-        )?;
-        d.set_item(
-            "triangles",
-            PyArray1::from_iter(py, mesh.triangles.iter().flatten().copied()).reshape(rows(mesh.triangles.len(), 3))?,
-        )?;
+        d.set_item("positions", matrix(py, &mesh.positions)?)?;
+        d.set_item("normals", matrix(py, &mesh.normals)?)?;
+        d.set_item("texcoords", matrix(py, &mesh.texcoords)?)?;
+        d.set_item("triangles", matrix(py, &mesh.triangles)?)?;
         d.set_item("u", PyArray1::from_slice(py, &mesh.u))?;
         d.set_item("v", PyArray1::from_slice(py, &mesh.v))?;
         Ok(d)
@@ -417,4 +404,12 @@ pub(crate) fn _road_from_recipe(py: Python<'_>, state: &Bound<'_, PyAny>) -> PyR
     let recipe = Recipe::from_py(state)?;
     let road = recipe.make(py)?;
     Ok(Road::from_core(road, recipe))
+}
+
+/// Rows of `K` values as a numpy array of shape (rows, K).
+fn matrix<'py, T: numpy::Element + Copy, const K: usize>(
+    py: Python<'py>,
+    rows: &[[T; K]],
+) -> PyResult<Bound<'py, numpy::PyArray2<T>>> {
+    PyArray1::from_iter(py, rows.iter().flatten().copied()).reshape([rows.len(), K])
 }

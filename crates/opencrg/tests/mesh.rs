@@ -92,8 +92,7 @@ fn ranges_and_gaps() {
 fn files_follow_their_formats() {
     let cp = road(true);
     let mesh = grid_mesh(&cp, None, None).unwrap();
-    let dir = std::env::temp_dir().join(format!("opencrg-mesh-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = scratch_dir("mesh");
     let (nvert, ntri) = (mesh.positions.len(), mesh.triangles.len());
 
     let stl = dir.join("road.stl");
@@ -141,8 +140,7 @@ fn files_follow_their_formats() {
 fn gltf_reads_back() {
     let cp = road(true);
     let mesh = grid_mesh(&cp, None, None).unwrap();
-    let dir = std::env::temp_dir().join(format!("opencrg-glb-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = scratch_dir("glb");
     let path = dir.join("road.glb");
     write_mesh(&mesh, &path, MeshFormat::from_path(&path).unwrap()).unwrap();
     let (doc, buffers, _) = gltf::import(&path).unwrap();
@@ -165,4 +163,11 @@ fn gltf_reads_back() {
     assert_eq!(normals[0], [mesh.normals[0][0], mesh.normals[0][2], -mesh.normals[0][1]]);
     assert_eq!(reader.read_tex_coords(0).unwrap().into_f32().count(), mesh.positions.len());
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A folder of this test process for the files a test writes.
+fn scratch_dir(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("opencrg-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
 }

@@ -198,7 +198,7 @@ impl PlainGrid {
 
 /// Where a point of the common case lies: its cell's interval indices and fractions,
 /// and its v (for the banking).
-#[derive(Debug, Clone, Copy, Default)]
+#[derive(Debug, Clone, Copy)]
 pub(crate) struct PlainCell {
     iu: usize,
     fu: f64,
