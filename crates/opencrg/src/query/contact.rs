@@ -262,7 +262,8 @@ impl ContactPoint {
     }
 
     /// The C library's call-free path of the x/y calls: (u, v) of (x, y) when the lean
-    /// search applies (an earlier query lies within reach and the walk is short), with the history updated as
+    /// search applies (a recent query lies within reach and the walk stays between the line's
+    /// ends), with the history updated as
     /// [`ContactPoint::xy_to_uv`] updates it; `None`, with nothing changed, otherwise
     /// (then [`ContactPoint::xy_to_uv_general`] answers). Never panics; not part of the
     /// supported Rust API.

@@ -212,22 +212,15 @@ impl History {
 /// sharing a contact point, the step before.
 const RECENT: usize = 8;
 
-/// Steps the lean search walks at most before it leaves the point to the general one.
-const LEAN_STEPS: usize = 32;
-
 /// Walks from point `k` to the segment `k - 1`..`k` whose normals enclose (x, y):
 /// forward while the point lies ahead of point `k`, then backward while it lies behind
 /// point `k - 1` (around a closed track, past its ends once). Returns `k` and how far
-/// the point lies ahead of points `k - 1` and `k` (see [`SearchPoint::ahead`]).
-///
-/// `LEAN` gives up (`None`) where the general walk would go around a closed track's end
-/// or take more than [`LEAN_STEPS`] steps; otherwise both take the same steps. `pts`
+/// the point lies ahead of points `k - 1` and `k` (see [`SearchPoint::ahead`]). `pts`
 /// holds at least two points and `1 <= k < pts.len()`; the walk never panics.
-#[inline(always)]
-fn walk<const LEAN: bool>(pts: &[SearchPoint], closed: bool, mut k: usize, x: f64, y: f64) -> Option<Walked> {
+fn walk(pts: &[SearchPoint], closed: bool, mut k: usize, x: f64, y: f64) -> Option<Walked<'_>> {
     let n = pts.len();
     let ahead = |i: usize| pts.get(i).map(|p| p.ahead(x, y));
-    let walk_limit = if LEAN { LEAN_STEPS } else { 2 * n + 4 };
+    let walk_limit = 2 * n + 4;
     let mut turn = 0.0;
     let mut steps = 0;
     let mut at_k;
@@ -238,17 +231,11 @@ fn walk<const LEAN: bool>(pts: &[SearchPoint], closed: bool, mut k: usize, x: f6
         }
         steps += 1;
         if steps > walk_limit {
-            if LEAN {
-                return None;
-            }
             break;
         }
         if k < n - 1 {
             k += 1;
         } else if closed {
-            if LEAN {
-                return None;
-            }
             turn = ahead(0)?;
             if turn <= 0.0 {
                 break;
@@ -263,50 +250,87 @@ fn walk<const LEAN: bool>(pts: &[SearchPoint], closed: bool, mut k: usize, x: f6
         let behind = ahead(k - 1)?;
         steps += 1;
         if !(behind < 0.0) || steps > walk_limit {
-            if LEAN && behind < 0.0 {
-                return None;
-            }
-            return Some(Walked { k, behind, at_k });
+            return Walked::at(pts, k, behind, at_k);
         }
         if k > 1 {
             k -= 1;
             at_k = behind;
         } else if closed {
-            if LEAN {
-                return None;
-            }
             if turn != 0.0 {
-                return Some(Walked { k, behind, at_k });
+                return Walked::at(pts, k, behind, at_k);
             }
             turn = ahead(n - 1)?;
             if turn >= 0.0 {
-                return Some(Walked { k, behind, at_k });
+                return Walked::at(pts, k, behind, at_k);
             }
             k = n - 1;
             at_k = turn;
         } else {
-            return Some(Walked { k, behind, at_k });
+            return Walked::at(pts, k, behind, at_k);
         }
     }
 }
 
-/// Where a [`walk`] ended: on segment `k - 1`..`k`, with how far the point lies ahead
-/// of point `k - 1` (`behind`) and of point `k` (`at_k`).
+/// [`walk`] where it stays between the line's ends: the same steps and result, or
+/// `None` where the walk would go around a closed track's end. On an open line the
+/// general walk never reaches its step limit (each direction takes fewer steps than
+/// the line has points), so this one needs no count.
+#[inline(always)]
+fn walk_lean(pts: &[SearchPoint], closed: bool, mut k: usize, x: f64, y: f64) -> Option<Walked<'_>> {
+    let mut at_k = pts.get(k)?.ahead(x, y);
+    while at_k > 0.0 {
+        let Some(next) = pts.get(k + 1) else {
+            return (!closed).then(|| walk_back(pts, closed, k, at_k, x, y)).flatten();
+        };
+        k += 1;
+        at_k = next.ahead(x, y);
+    }
+    walk_back(pts, closed, k, at_k, x, y)
+}
+
+/// The backward part of [`walk_lean`], from point `k` where the point lies `at_k`
+/// ahead: iterates the points before `k`, newest index first, with no index checks.
+#[inline(always)]
+fn walk_back(pts: &[SearchPoint], closed: bool, k: usize, mut at_k: f64, x: f64, y: f64) -> Option<Walked<'_>> {
+    let mut b = pts.get(k)?;
+    for (i, a) in pts.get(..k)?.iter().enumerate().rev() {
+        let behind = a.ahead(x, y);
+        if !(behind < 0.0) {
+            return Some(Walked { k: i + 1, a, b, behind, at_k });
+        }
+        if i == 0 {
+            return (!closed).then_some(Walked { k: 1, a, b, behind, at_k });
+        }
+        (b, at_k) = (a, behind);
+    }
+    None
+}
+
+/// Where a [`walk`] ended: on segment `k - 1`..`k` from point `a` to point `b`, with
+/// how far the point lies ahead of point `k - 1` (`behind`) and of point `k` (`at_k`).
 #[derive(Debug, Clone, Copy)]
-struct Walked {
+struct Walked<'p> {
     k: usize,
+    a: &'p SearchPoint,
+    b: &'p SearchPoint,
     behind: f64,
     at_k: f64,
 }
 
+impl<'p> Walked<'p> {
+    /// The walk's end on segment `k - 1`..`k` of `pts` (`None` outside them).
+    fn at(pts: &'p [SearchPoint], k: usize, behind: f64, at_k: f64) -> Option<Self> {
+        Some(Walked { k, a: pts.get(k.checked_sub(1)?)?, b: pts.get(k)?, behind, at_k })
+    }
+}
+
 /// (u, v) of (x, y) found by a [`walk`]: v along the segment's normal, u interpolated
 /// between the normals of its two points; then measured from an end point where u
-/// lies before the start or beyond the end. `None` only for a walk ending outside the
-/// line.
+/// lies before the start or beyond the end. `None` only for a line without the
+/// segment's length.
 #[inline(always)]
 fn solve(line: &RefLine, closed_search: bool, w: Walked, x: f64, y: f64) -> Option<(f64, f64)> {
-    let k = w.k;
-    let (a, b) = (line.search.get(k - 1)?, line.search.get(k)?);
+    let (k, a, b) = (w.k, w.a, w.b);
     let (x2x1, y2y1) = (b.x - a.x, b.y - a.y);
     let (xxx1, yyy1) = (x - a.x, y - a.y);
     let v = (x2x1 * yyy1 - y2y1 * xxx1) / line.seg_len.get(k - 1)?;
@@ -354,8 +378,8 @@ fn beyond_ends(line: &RefLine, closed_search: bool, x: f64, y: f64, u: f64, v: f
 }
 
 /// [`xy_to_uv`] for the common case of a point near a recent one: one of the [`RECENT`]
-/// newest history entries is within reach, and the walk is short and does not go around
-/// a closed track's end. The same answer and the same history change as
+/// newest history entries is within reach, and the walk does not go around a closed
+/// track's end. The same answer and the same history change as
 /// [`xy_to_uv`] then; `None`, with nothing changed, otherwise. Never panics.
 #[inline(always)]
 pub(crate) fn xy_to_uv_lean(
@@ -368,7 +392,7 @@ pub(crate) fn xy_to_uv_lean(
     let n = line.n;
     let pts = line.search.get(..n)?;
     let start = history.recent_within(x, y)?.min(n - 1).max(1);
-    let walked = walk::<true>(pts, line.closed.is_some(), start, x, y)?;
+    let walked = walk_lean(pts, line.closed.is_some(), start, x, y)?;
     let found = solve(line, closed_search, walked, x, y)?;
     history.record(x, y, (walked.k + 1).min(n - 1));
     Some(found)
@@ -391,7 +415,7 @@ pub(crate) fn xy_to_uv(
         None => index.nearest(line, x, y),
     };
     let pts = &line.search[..n];
-    let found = walk::<false>(pts, line.closed.is_some(), start.max(1), x, y)
+    let found = walk(pts, line.closed.is_some(), start.max(1), x, y)
         .and_then(|w| Some((w.k, solve(line, closed_search, w, x, y)?)));
     match found {
         Some((k, found)) => {
