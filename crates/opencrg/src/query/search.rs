@@ -391,7 +391,10 @@ pub(crate) fn xy_to_uv_lean(
 ) -> Option<(f64, f64)> {
     let n = line.n;
     let pts = line.search.get(..n)?;
-    let start = history.recent_within(x, y)?.min(n - 1).max(1);
+    // Unlike the general search, no clamp of the start to 1..n-1: from an index beyond
+    // the line the walk declines, and from 0 it either steps forward to where the
+    // general walk starting at 1 ends or declines.
+    let start = history.recent_within(x, y)?;
     let walked = walk_lean(pts, line.closed.is_some(), start, x, y)?;
     let found = solve(line, closed_search, walked, x, y)?;
     history.record(x, y, (walked.k + 1).min(n - 1));
@@ -460,7 +463,8 @@ mod tests {
     /// The lean search either gives the general search's answer and history change, bit
     /// for bit, or declines and changes nothing: on an open winding line, a closed
     /// circle (with and without the closed-track search) and lines of a few points,
-    /// along paths forwards and backwards, with jumps, off the road and beyond its ends.
+    /// along paths forwards and backwards, with jumps, off the road and beyond its ends,
+    /// and from history entries outside the line's indices.
     #[test]
     fn lean_search_answers_as_the_general_search() {
         use crate::synth::RoadSpec;
@@ -494,6 +498,11 @@ mod tests {
                         let off = if step % 97 == 0 { 50.0 * (random() - 0.5) } else { 3.0 * (random() - 0.5) };
                         let along = if step % 131 == 0 { 1.2 * length * (random() - 0.1) } else { 0.0 };
                         let (x, y) = (xs[i] + off + along, ys[i] - off * 0.5);
+                        if step % 250 == 125 {
+                            // A history from another road: an index at either end or beyond it.
+                            let index = [0, 1, line.n - 1, line.n, line.n + 7][step / 250 % 5];
+                            history.record(x + 0.01, y, index);
+                        }
                         let mut general = history.clone();
                         let expected = xy_to_uv(line, &road.index, closed_search, &mut general, x, y);
                         let mut lean = history.clone();
