@@ -137,14 +137,15 @@ class Road:
     ) -> tuple[_Floats, _Floats, _Floats, _Floats]: ...
 
     def to_mesh(
-        self, u: tuple[float, float] | None = None, v: tuple[float, float] | None = None, **options: _Setting
+        self, u: tuple[float, float] | None = None, v: tuple[float, float] | None = None,
+        max_error: float | None = None, **options: _Setting
     ) -> dict[str, np.ndarray]:
-        """The surface at the grid nodes: positions, normals, texcoords, triangles, u, v (numpy)."""
+        """The surface at the grid nodes, or simplified within max_error (m): positions, normals, texcoords, triangles, u, v (numpy)."""
     def write_mesh(
         self, path: str | PathLike[str], u: tuple[float, float] | None = None,
-        v: tuple[float, float] | None = None, **options: _Setting
+        v: tuple[float, float] | None = None, max_error: float | None = None, **options: _Setting
     ) -> None:
-        """Writes the surface mesh as .obj, .stl, .ply or .glb."""
+        """Writes the surface mesh (simplified within max_error when given) as .obj, .stl, .ply or .glb."""
     def roughness(self, tracks: list[float] | None = None, segment: float = 100.0) -> list[dict[str, object]]:
         """IRI (m/km, whole track and per segment) and ISO 8608 PSD class of wheel tracks at v."""
 

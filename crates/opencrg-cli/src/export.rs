@@ -2,8 +2,9 @@
 //! as a texture over the u/v grid: a 16-bit height map, or with `--normal-map` an 8-bit
 //! normal map (PNG).
 
-use opencrg::mesh::grid_mesh;
+use opencrg::mesh::{grid_mesh, Mesh};
 use opencrg::mesh_files::{write_mesh, write_whole, MeshFormat};
+use opencrg::simplify::{simplified_mesh, Stage};
 use opencrg::ContactPoint;
 use std::path::Path;
 
@@ -41,11 +42,27 @@ fn parse_range(text: Option<&str>, what: &str) -> Result<Range, String> {
     }
 }
 
+/// What `export` writes, but the file.
+pub struct Request {
+    /// The u range (all of the road when `None`).
+    pub u: Range,
+    /// The v range (all of the road when `None`).
+    pub v: Range,
+    /// A normal map instead of a height map (PNG only).
+    pub normal_map: bool,
+    /// A simplified mesh within this bound (m) instead of the full one (meshes only).
+    pub max_error: Option<f64>,
+}
+
 /// Writes the export `out` names by its extension.
-pub fn export(cp: &ContactPoint, out: &Path, u: Range, v: Range, normal_map: bool) -> Result<String, String> {
-    let mesh = grid_mesh(cp, u, v).map_err(|e| e.to_string())?;
+pub fn export(cp: &ContactPoint, out: &Path, request: &Request) -> Result<String, String> {
+    let &Request { u, v, normal_map, max_error } = request;
     let is_png = out.extension().and_then(|e| e.to_str()).is_some_and(|e| e.eq_ignore_ascii_case("png"));
     if is_png {
+        if max_error.is_some() {
+            return Err("--max-error: only for a mesh (.obj, .stl, .ply or .glb)".into());
+        }
+        let mesh = grid_mesh(cp, u, v).map_err(|e| e.to_string())?;
         let (nu, nv) = (mesh.u.len(), mesh.v.len());
         if normal_map {
             normal_png(cp, &mesh, nu, nv, out)?;
@@ -59,8 +76,31 @@ pub fn export(cp: &ContactPoint, out: &Path, u: Range, v: Range, normal_map: boo
     }
     let format = MeshFormat::from_path(out)
         .ok_or_else(|| format!("{}: unknown export format; .obj, .stl, .ply, .glb or .png", out.display()))?;
+    let mesh = match max_error {
+        Some(bound) => simplified(cp, u, v, bound)?,
+        None => grid_mesh(cp, u, v).map_err(|e| e.to_string())?,
+    };
     write_mesh(&mesh, out, format).map_err(|e| e.to_string())?;
     Ok(format!("{}: {} vertices, {} triangles", out.display(), mesh.positions.len(), mesh.triangles.len()))
+}
+
+/// The simplified mesh, with a progress bar on a terminal.
+fn simplified(cp: &ContactPoint, u: Range, v: Range, bound: f64) -> Result<Mesh, String> {
+    let bar = indicatif::ProgressBar::new(1000);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{msg:10} {bar:40} {percent:>3} %")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    );
+    let mesh = simplified_mesh(cp, u, v, bound, &mut |stage| match stage {
+        Stage::Sampling => bar.set_message("sampling"),
+        Stage::Measuring(done) => {
+            bar.set_message("measuring");
+            bar.set_position((done * 1000.0) as u64);
+        }
+        Stage::Building => bar.set_message("building"),
+    });
+    bar.finish_and_clear();
+    mesh.map_err(|e| e.to_string())
 }
 
 /// A PNG of `width` x `height` pixels with `channels`, `bits` deep, and text chunks,

@@ -87,7 +87,7 @@ enum Command {
         #[command(flatten)]
         options: EvalOptions,
     },
-    /// The surface for 3D tools: a mesh at the grid nodes (.obj, .stl, .ply, .glb) or a height or normal map (.png).
+    /// The surface for 3D tools: a mesh at the grid nodes or simplified (.obj, .stl, .ply, .glb), or a height or normal map (.png).
     Export {
         /// The road file (checked and its modifiers applied unless --raw, as `eval` does).
         road: PathBuf,
@@ -98,6 +98,9 @@ enum Command {
         /// With a .png output: a normal map instead of a height map.
         #[arg(long)]
         normal_map: bool,
+        /// A simplified mesh whose z stays within this many metres of the road's at every grid node.
+        #[arg(long, value_name = "METRES")]
+        max_error: Option<f64>,
         #[command(flatten)]
         options: EvalOptions,
     },
@@ -362,11 +365,11 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
             };
             picture.write_png(&output)?;
         }
-        Command::Export { road, output, ranges, normal_map, options } => {
+        Command::Export { road, output, ranges, normal_map, max_error, options } => {
             let (u, v) = ranges.parse()?;
             let cp = contact_point(&road, &options)?;
-            let done =
-                export::export(&cp, &output, u, v, normal_map).map_err(|e| format!("{}: {e}", road.display()))?;
+            let request = export::Request { u, v, normal_map, max_error };
+            let done = export::export(&cp, &output, &request).map_err(|e| format!("{}: {e}", road.display()))?;
             eprintln!("{done}");
         }
         Command::View { road, output, ranges, max_vertices, options } => {

@@ -272,6 +272,7 @@ fn export_writes_meshes_and_maps() {
         ("m.ply", vec!["--v", "-1:1"]),
         ("h.png", vec![]),
         ("n.png", vec!["--normal-map"]),
+        ("s.stl", vec!["--max-error", "0.05"]),
     ] {
         let out = d.join(name);
         let mut args = vec!["export", r, out.to_str().unwrap()];
@@ -286,6 +287,12 @@ fn export_writes_meshes_and_maps() {
     let triangles = u32::from_le_bytes(stl[80..84].try_into().unwrap()) as usize;
     assert_eq!(stl.len(), 84 + 50 * triangles);
     assert!((2 * 30 * 12 - 18..2 * 30 * 12).contains(&triangles), "{triangles}");
+    // Simplified within 5 cm: fewer triangles than the full mesh of the whole road.
+    let full = std::fs::read(d.join("m.obj")).unwrap();
+    let full_triangles = full.split(|&b| b == b'\n').filter(|l| l.starts_with(b"f ")).count();
+    let stl = std::fs::read(d.join("s.stl")).unwrap();
+    let simplified = u32::from_le_bytes(stl[80..84].try_into().unwrap()) as usize;
+    assert!(simplified > 0 && simplified < full_triangles, "{simplified} of {full_triangles}");
     // The height map: 16-bit grey, one pixel per node, the z range in its text.
     let png = std::fs::read(d.join("h.png")).unwrap();
     assert_eq!(&png[12..16], b"IHDR");
@@ -296,6 +303,8 @@ fn export_writes_meshes_and_maps() {
         (vec!["export", r, "x.obj", "--normal-map"], "must be a .png"),
         (vec!["export", r, "x.obj", "--u", "100:200"], "fewer than two grid nodes"),
         (vec!["export", r, "x.obj", "--u", "a:b"], "expected FROM:TO"),
+        (vec!["export", r, "x.obj", "--max-error", "0"], "positive number"),
+        (vec!["export", r, "x.png", "--max-error", "0.01"], "only for a mesh"),
     ] {
         let o = opencrg(&args, None);
         assert_eq!(o.status.code(), Some(2), "{args:?}");

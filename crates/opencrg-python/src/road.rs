@@ -92,17 +92,23 @@ impl Road {
 }
 
 impl Road {
-    /// The surface mesh with `options` (see `to_mesh`).
+    /// The surface mesh with `options`, simplified within `max_error` when given (see
+    /// `to_mesh`).
     fn mesh(
         &self,
         py: Python<'_>,
         u: Option<(f64, f64)>,
         v: Option<(f64, f64)>,
+        max_error: Option<f64>,
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<crg::mesh::Mesh> {
         let mut cp = crg::ContactPoint::new(self.shared());
         set_options(&mut cp, options)?;
-        py.detach(|| crg::mesh::grid_mesh(&cp, u, v)).map_err(errors::to_py)
+        py.detach(|| match max_error {
+            Some(bound) => crg::simplify::simplified_mesh(&cp, u, v, bound, &mut |_| {}),
+            None => crg::mesh::grid_mesh(&cp, u, v),
+        })
+        .map_err(errors::to_py)
     }
 }
 
@@ -313,15 +319,18 @@ impl Road {
     /// of numpy arrays `positions` (n x 3 float64, x/y/z), `normals` (n x 3 float32),
     /// `texcoords` (n x 2 float32), `triangles` (m x 3 uint32), `u` and `v` (the nodes;
     /// vertex `i * len(v) + j` lies at `u[i]`, `v[j]`). Cells without elevation are left out.
-    #[pyo3(signature = (u = None, v = None, **options))]
+    /// With `max_error` (m): a simplified mesh whose z stays within it of the road's at
+    /// every grid node, its `u` and `v` empty.
+    #[pyo3(signature = (u = None, v = None, max_error = None, **options))]
     fn to_mesh<'py>(
         &self,
         py: Python<'py>,
         u: Option<(f64, f64)>,
         v: Option<(f64, f64)>,
+        max_error: Option<f64>,
         options: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        let mesh = self.mesh(py, u, v, options)?;
+        let mesh = self.mesh(py, u, v, max_error, options)?;
         let d = PyDict::new(py);
         d.set_item("positions", matrix(py, &mesh.positions)?)?;
         d.set_item("normals", matrix(py, &mesh.normals)?)?;
@@ -334,19 +343,20 @@ impl Road {
 
     /// Writes the surface mesh (see `to_mesh`) to `path`, the format from its extension:
     /// `.obj`, `.stl`, `.ply` or `.glb`.
-    #[pyo3(signature = (path, u = None, v = None, **options))]
+    #[pyo3(signature = (path, u = None, v = None, max_error = None, **options))]
     fn write_mesh<'py>(
         &self,
         py: Python<'py>,
         path: PathBuf,
         u: Option<(f64, f64)>,
         v: Option<(f64, f64)>,
+        max_error: Option<f64>,
         options: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<()> {
         let format = crg::mesh_files::MeshFormat::from_path(&path).ok_or_else(|| {
             PyValueError::new_err(format!("{}: unknown mesh format; .obj, .stl, .ply or .glb", path.display()))
         })?;
-        let mesh = self.mesh(py, u, v, options)?;
+        let mesh = self.mesh(py, u, v, max_error, options)?;
         py.detach(|| crg::mesh_files::write_mesh(&mesh, &path, format)).map_err(errors::to_py)
     }
 

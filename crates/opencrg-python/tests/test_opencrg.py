@@ -338,5 +338,15 @@ def test_mesh_of_the_surface(road_file, opencrg_command, tmp_path):
     subprocess.run([opencrg_command, "export", "--raw", str(road_file), str(tmp_path / "cli.ply"), "--u", "5:20"],
                    check=True, capture_output=True)
     assert (tmp_path / "py.ply").read_bytes() == (tmp_path / "cli.ply").read_bytes()
+    # Simplified within 1 cm: fewer triangles, no grid, the same file as the command's.
+    s = road.to_mesh(max_error=0.01)
+    assert 0 < len(s["triangles"]) < len(road.to_mesh()["triangles"])
+    assert len(s["u"]) == 0 and len(s["v"]) == 0 and np.isfinite(s["positions"]).all()
+    road.write_mesh(tmp_path / "py_s.stl", max_error=0.01)
+    subprocess.run([opencrg_command, "export", "--raw", str(road_file), str(tmp_path / "cli_s.stl"),
+                    "--max-error", "0.01"], check=True, capture_output=True)
+    assert (tmp_path / "py_s.stl").read_bytes() == (tmp_path / "cli_s.stl").read_bytes()
+    with pytest.raises(ValueError, match="positive number"):
+        road.to_mesh(max_error=-1.0)
     with pytest.raises(ValueError, match="unknown mesh format"):
         road.write_mesh(tmp_path / "x.gltf")

@@ -65,6 +65,7 @@ mod export {
     pub(crate) mod gltf;
     pub mod mesh;
     pub mod mesh_files;
+    pub mod simplify;
 }
 pub mod synth;
 
@@ -72,7 +73,7 @@ pub use analysis::{iri, psd, roughness};
 pub use base::settings;
 use base::{compat, error, memory};
 use export::gltf;
-pub use export::{mesh, mesh_files};
+pub use export::{mesh, mesh_files, simplify};
 pub use model::{grid, header, refline, report};
 use model::{road, sample_index};
 use query::{contact, eval, interpolation, normal, plain, search};

@@ -20,9 +20,10 @@ pub struct Mesh {
     pub texcoords: Vec<[f32; 2]>,
     /// Three vertex indices per triangle.
     pub triangles: Vec<[u32; 3]>,
-    /// The u of the grid nodes (m): vertex `i * v.len() + j` lies at `u[i]`, `v[j]`.
+    /// The u of the grid nodes (m): vertex `i * v.len() + j` lies at `u[i]`, `v[j]`; empty
+    /// for a simplified mesh, whose vertices do not lie on a grid.
     pub u: Vec<f64>,
-    /// The v of the long sections (m).
+    /// The v of the long sections (m); empty for a simplified mesh.
     pub v: Vec<f64>,
 }
 
@@ -40,6 +41,21 @@ fn nodes_within(nodes: &[f64], range: Option<(f64, f64)>, what: &str) -> Result<
     Ok(first..end)
 }
 
+/// The u of the grid nodes with u in `u` and the v of the long sections with v in `v`
+/// (m, inclusive; all of them when `None`). Refused: a range holding fewer than two.
+pub(crate) fn grid_nodes(
+    cp: &ContactPoint,
+    u: Option<(f64, f64)>,
+    v: Option<(f64, f64)>,
+) -> Result<(Vec<f64>, Vec<f64>)> {
+    let road = cp.road();
+    let (u_first, _) = road.u_range();
+    let du = road.increments().0;
+    let all: Vec<f64> = (0..road.grid().nu).map(|i| u_first + i as f64 * du).collect();
+    let (iu, iv) = (nodes_within(&all, u, "u")?, nodes_within(&road.grid().v, v, "v")?);
+    Ok((all[iu].to_vec(), road.grid().v[iv].to_vec()))
+}
+
 /// The mesh of the surface the contact point evaluates, over the grid nodes with u in
 /// `u` and v in `v` (m, inclusive; the whole road when `None`). Refused: a range holding
 /// fewer than two nodes, a mesh of 2^32 vertices or more.
@@ -50,16 +66,13 @@ pub fn grid_mesh(cp: &ContactPoint, u: Option<(f64, f64)>, v: Option<(f64, f64)>
 /// [`grid_mesh`] over every `step`-th node along u (and the last one in the range): a
 /// lighter mesh for a view, whose vertices still lie on the surface.
 pub fn grid_mesh_every(cp: &ContactPoint, u: Option<(f64, f64)>, v: Option<(f64, f64)>, step: usize) -> Result<Mesh> {
-    let road = cp.road();
-    let (u_first, _) = road.u_range();
-    let du = road.increments().0;
-    let nu = road.grid().nu;
-    let all: Vec<f64> = (0..nu).map(|i| u_first + i as f64 * du).collect();
-    let (iu, iv) = (nodes_within(&all, u, "u")?, nodes_within(&road.grid().v, v, "v")?);
-    let vs = &road.grid().v[iv.clone()];
-    let last = iu.end - 1;
-    let us: Vec<f64> = iu.step_by(step.max(1)).chain(std::iter::once(last)).map(|i| all[i]).collect();
-    let us = &us[..if us.len() > 1 && us[us.len() - 2] == us[us.len() - 1] { us.len() - 1 } else { us.len() }];
+    let (all, vs) = grid_nodes(cp, u, v)?;
+    let (last, step) = (all.len() - 1, step.max(1));
+    let mut us: Vec<f64> = all.iter().copied().step_by(step).collect();
+    if last % step != 0 {
+        us.push(all[last]);
+    }
+    let (us, vs) = (&us[..], &vs[..]);
     let count = us.len() * vs.len();
     if count > u32::MAX as usize {
         return Err(Error::Analysis(format!("a mesh of {count} vertices is more than 32-bit indices can hold")));
