@@ -8,6 +8,7 @@
 #ifndef OPENCRG_BENCH_CAR_H
 #define OPENCRG_BENCH_CAR_H
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -97,4 +98,16 @@ static int chosen(const char *var, const char *word)
     }
     return 0;
 }
+
+/* `chosen` for a number, written as printf's %g writes it. */
+static int number_chosen(const char *var, double number)
+{
+    char word[32];
+    snprintf(word, sizeof word, "%g", number);
+    return chosen(var, word);
+}
+
+/* The speeds the programs drive at (m/s). */
+#define CAR_SPEEDS 4
+static const double car_speeds[CAR_SPEEDS] = { 1, 5, 30, 50 };
 #endif

@@ -127,18 +127,15 @@ int main(int argc, char **argv)
     }
     long steps = (long)rounds * CHUNK;
     double *t = malloc(sizeof(double) * rounds * nl), *sorted = malloc(sizeof(double) * rounds);
-    const double speeds[] = { 1, 5, 30, 50 };
-    char word[32];
     for (int c = XY2Z; c <= UV2Z; c++) {
         if (!chosen("AB_CALLS", call_names[c]))
             continue;
-        for (int s = 0; s < 4; s++) {
-            snprintf(word, sizeof word, "%g", speeds[s]);
-            if (!chosen("AB_SPEEDS", word))
+        for (int s = 0; s < CAR_SPEEDS; s++) {
+            if (!number_chosen("AB_SPEEDS", car_speeds[s]))
                 continue;
             struct Path p;
             path_alloc(&p, steps);
-            drive(&libs[0].road, &p, 0.0, speeds[s], steps, libs[0].uv2xy, libs[0].cp[0]);
+            drive(&libs[0].road, &p, 0.0, car_speeds[s], steps, libs[0].uv2xy, libs[0].cp[0]);
             for (int l = 0; l < nl; l++)
                 run(&libs[l], (enum Call)c, &p, 0, CHUNK);
             for (int r = 0; r < rounds; r++)
@@ -153,7 +150,7 @@ int main(int argc, char **argv)
                 for (int r = 0; r < rounds; r++)
                     sorted[r] = t[r] / t[l * rounds + r];
                 qsort(sorted, rounds, sizeof(double), cmp_double);
-                printf("ab %s %g %s ns %.2f min %.2f max %.2f ratio %.3f q1 %.3f q3 %.3f\n", call_names[c], speeds[s],
+                printf("ab %s %g %s ns %.2f min %.2f max %.2f ratio %.3f q1 %.3f q3 %.3f\n", call_names[c], car_speeds[s],
                        libs[l].path, med, lo, hi, at(sorted, rounds, 0.5), at(sorted, rounds, 0.25), at(sorted, rounds, 0.75));
             }
             path_free(&p);

@@ -393,24 +393,20 @@ int main(int argc, char **argv)
     print_cpu();
     calibrate_ticks();
     measure_tick_cost();
-    const double speeds[] = { 1, 5, 30, 50 };
-    char word[32];
     for (int c = XY2Z; c <= UV2Z; c++) {
         if (!chosen("VB_CALLS", call_names[c]))
             continue;
-        for (int s = 0; s < 4; s++) {
-            snprintf(word, sizeof word, "%g", speeds[s]);
-            if (!chosen("VB_SPEEDS", word))
+        for (int s = 0; s < CAR_SPEEDS; s++) {
+            if (!number_chosen("VB_SPEEDS", car_speeds[s]))
                 continue;
             for (int shared = 0; shared < 2; shared++)
                 if (chosen("VB_MODES", shared ? "shared" : "own"))
-                    single_case((enum Call)c, speeds[s], shared);
+                    single_case((enum Call)c, car_speeds[s], shared);
         }
     }
     const int thread_counts[] = { 8, 16 };
     for (int k = 0; k < 2; k++) {
-        snprintf(word, sizeof word, "%d", thread_counts[k]);
-        if (!chosen("VB_THREADS", word))
+        if (!number_chosen("VB_THREADS", thread_counts[k]))
             continue;
         for (int c = XY2Z; c <= UV2Z; c++)
             if (chosen("VB_CALLS", call_names[c]))

@@ -57,14 +57,6 @@ impl Triangle {
     }
 }
 
-/// The road's grid nodes in the range meshed, and their elevations.
-struct Nodes {
-    u: Vec<f64>,
-    v: Vec<f64>,
-    /// `z[i * v.len() + j]` at `u[i]`, `v[j]`.
-    z: Vec<f64>,
-}
-
 /// The lattice: `nu` x `nv` points, `h_u` and `h_v` apart from (`u0`, `v0`), in tiles of
 /// `size` cells, with the road's elevation at each point.
 struct Lattice {
@@ -83,6 +75,11 @@ impl Lattice {
         p.0 * self.nv + p.1
     }
 
+    /// Points along u.
+    fn nu(&self) -> usize {
+        self.tiles * self.size + 1
+    }
+
     fn uv(&self, p: Point) -> (f64, f64) {
         (self.u0 + p.0 as f64 * self.h_u, self.v0 + p.1 as f64 * self.h_v)
     }
@@ -94,14 +91,17 @@ impl Lattice {
     }
 }
 
-/// The grid nodes seen from the lattice: each node's place in lattice units, and for each
-/// lattice line the first node at or after it and the first node after it (a node on a
-/// line, up to rounding, counts as on it).
+/// The road's grid nodes in the range meshed, seen from the lattice: their places in
+/// lattice units and their elevations, and for each lattice line the first node at or
+/// after it and the first node after it (a node on a line, up to rounding, counts as on
+/// it).
 struct Cover {
     /// Node `i`'s u in lattice units.
     u: Vec<f64>,
     /// Node `j`'s v in lattice units.
     v: Vec<f64>,
+    /// The elevation of node (`i`, `j`) at `z[i * v.len() + j]`.
+    z: Vec<f64>,
     /// For lattice index `p` along u: the nodes from `u_from[p]` on lie at or after it.
     u_from: Vec<usize>,
     /// For lattice index `p` along u: the nodes before `u_to[p]` lie at or before it.
@@ -111,25 +111,26 @@ struct Cover {
 }
 
 impl Cover {
-    fn new(lattice: &Lattice, nodes: &Nodes) -> Self {
-        let u: Vec<f64> = nodes.u.iter().map(|&u| (u - lattice.u0) / lattice.h_u).collect();
-        let v: Vec<f64> = nodes.v.iter().map(|&v| (v - lattice.v0) / lattice.h_v).collect();
+    /// The nodes at `us` x `vs` (m) with elevations `z`, seen from `lattice`.
+    fn new(lattice: &Lattice, us: &[f64], vs: &[f64], z: Vec<f64>) -> Self {
+        let u: Vec<f64> = us.iter().map(|&u| (u - lattice.u0) / lattice.h_u).collect();
+        let v: Vec<f64> = vs.iter().map(|&v| (v - lattice.v0) / lattice.h_v).collect();
         let lines = |at: &[f64], count: usize| {
             let slack = 1e-7;
             let from = (0..count).map(|p| at.partition_point(|&x| x < p as f64 - slack)).collect();
             let to = (0..count).map(|p| at.partition_point(|&x| x <= p as f64 + slack)).collect();
             (from, to)
         };
-        let (u_from, u_to) = lines(&u, lattice.z.len() / lattice.nv);
+        let (u_from, u_to) = lines(&u, lattice.nu());
         let (v_from, v_to) = lines(&v, lattice.nv);
-        Cover { u, v, u_from, u_to, v_from, v_to }
+        Cover { u, v, z, u_from, u_to, v_from, v_to }
     }
 }
 
 /// Whether triangle `t` covers a grid node farther than `bound` from its plane (or a node
 /// or corner without elevation). Worked in lattice units, where the triangle's corners
 /// are whole numbers.
-fn fails(t: &Triangle, lattice: &Lattice, nodes: &Nodes, cover: &Cover, bound: f64) -> bool {
+fn fails(t: &Triangle, lattice: &Lattice, cover: &Cover, bound: f64) -> bool {
     let corners = [t.a, t.b, t.c].map(|p| [p.0 as f64, p.1 as f64, lattice.z[lattice.index(p)]]);
     if corners.iter().any(|c| !c[2].is_finite()) {
         return true;
@@ -150,11 +151,11 @@ fn fails(t: &Triangle, lattice: &Lattice, nodes: &Nodes, cover: &Cover, bound: f
         (t.a.0.min(t.b.0).min(t.c.0), t.a.1.min(t.b.1).min(t.c.1)),
         (t.a.0.max(t.b.0).max(t.c.0), t.a.1.max(t.b.1).max(t.c.1)),
     );
-    let nv = nodes.v.len();
+    let nv = cover.v.len();
     let (js, je) = (cover.v_from[lo.1], cover.v_to[hi.1]);
     for i in cover.u_from[lo.0]..cover.u_to[hi.0] {
         let u = cover.u[i];
-        let row = &nodes.z[i * nv + js..i * nv + je];
+        let row = &cover.z[i * nv + js..i * nv + je];
         for (&z, &v) in row.iter().zip(&cover.v[js..je]) {
             let inside = edges.iter().all(|&(du, dv, au, av)| du * (v - av) - dv * (u - au) >= margin);
             if inside {
@@ -182,8 +183,7 @@ fn each_at(t: Triangle, at: u32, level: u32, f: &mut impl FnMut(&Triangle)) {
 /// The needed points of the lattice (see the module's text), level by level from the
 /// smallest triangles up, every tile at each level: a point on the border of two tiles
 /// is measured from both before the level above reads it.
-fn needed_points(lattice: &Lattice, nodes: &Nodes, bound: f64, progress: &mut dyn FnMut(f64)) -> Vec<bool> {
-    let cover = Cover::new(lattice, nodes);
+fn needed_points(lattice: &Lattice, cover: &Cover, bound: f64, progress: &mut dyn FnMut(f64)) -> Vec<bool> {
     let mut needed = vec![false; lattice.z.len()];
     let levels = lattice.levels();
     for (done, level) in (0..levels).rev().enumerate() {
@@ -191,10 +191,11 @@ fn needed_points(lattice: &Lattice, nodes: &Nodes, bound: f64, progress: &mut dy
             for root in Triangle::tile(tile * lattice.size, lattice.size) {
                 each_at(root, 0, level, &mut |t| {
                     let m = lattice.index(t.middle());
-                    let below = level + 1 < levels && t.halves().iter().any(|h| needed[lattice.index(h.middle())]);
-                    if !needed[m] && (below || fails(t, lattice, nodes, &cover, bound)) {
-                        needed[m] = true;
+                    if needed[m] {
+                        return;
                     }
+                    let below = level + 1 < levels && t.halves().iter().any(|h| needed[lattice.index(h.middle())]);
+                    needed[m] = below || fails(t, lattice, cover, bound);
                 });
             }
             progress((done as f64 + (tile + 1) as f64 / lattice.tiles as f64) / levels as f64);
@@ -203,19 +204,19 @@ fn needed_points(lattice: &Lattice, nodes: &Nodes, bound: f64, progress: &mut dy
     needed
 }
 
-/// The lattice over the nodes: tiles of 2^k cells across (at least as many as the grid
-/// has cells across, at least [`MIN_TILE`]), as many along u as the grid needs, their
-/// cells no longer than the grid's.
-fn lattice_over(cp: &ContactPoint, nodes: &Nodes) -> Result<Lattice> {
-    let size = (nodes.v.len() - 1).next_power_of_two().max(MIN_TILE);
-    let tiles = (nodes.u.len() - 1).div_ceil(size);
+/// The lattice over the grid nodes `us` x `vs`: tiles of 2^k cells across (at least as
+/// many as the grid has cells across, at least [`MIN_TILE`]), as many along u as the grid
+/// needs, their cells no longer than the grid's.
+fn lattice_over(cp: &ContactPoint, us: &[f64], vs: &[f64]) -> Result<Lattice> {
+    let size = (vs.len() - 1).next_power_of_two().max(MIN_TILE);
+    let tiles = (us.len() - 1).div_ceil(size);
     let (nu, nv) = (tiles * size + 1, size + 1);
     if nu.checked_mul(nv).is_none_or(|n| n > u32::MAX as usize) {
         return Err(Error::Analysis(format!("a lattice of {nu} x {nv} points is more than 32-bit indices can hold")));
     }
-    let (u0, v0) = (nodes.u[0], nodes.v[0]);
-    let h_u = (nodes.u[nodes.u.len() - 1] - u0) / (tiles * size) as f64;
-    let h_v = (nodes.v[nodes.v.len() - 1] - v0) / size as f64;
+    let (u0, v0) = (us[0], vs[0]);
+    let h_u = (us[us.len() - 1] - u0) / (tiles * size) as f64;
+    let h_v = (vs[vs.len() - 1] - v0) / size as f64;
     let mut lattice = Lattice { size, tiles, nv, u0, v0, h_u, h_v, z: Vec::with_capacity(nu * nv) };
     for i in 0..nu {
         for j in 0..nv {
@@ -256,9 +257,10 @@ pub fn simplified_mesh(
     progress(Stage::Sampling);
     let (us, vs) = grid_nodes(cp, u, v)?;
     let z = us.iter().flat_map(|&u| vs.iter().map(move |&v| (u, v))).map(|(u, v)| cp.uv_to_z(u, v).unwrap_or(f64::NAN));
-    let nodes = Nodes { z: z.collect(), u: us, v: vs };
-    let lattice = lattice_over(cp, &nodes)?;
-    let needed = needed_points(&lattice, &nodes, max_error, &mut |f| progress(Stage::Measuring(f)));
+    let z = z.collect();
+    let lattice = lattice_over(cp, &us, &vs)?;
+    let cover = Cover::new(&lattice, &us, &vs, z);
+    let needed = needed_points(&lattice, &cover, max_error, &mut |f| progress(Stage::Measuring(f)));
     progress(Stage::Building);
     Ok(build(cp, &lattice, &needed))
 }
