@@ -789,6 +789,64 @@ int crgDataSetGetGridZ(int dataSetId, float *z, int nU, int nV);
  */
 int crgDataSetGetRefLine(int dataSetId, double *u, double *x, double *y, double *phi, double *z, int nU);
 
+/*
+ ======================================================================================
+ ROADS ON THE EARTH: the global origin (REFERENCE_LINE_OFFSET_*, the names and argument
+ orders of ASAM's development API) and, beyond it, geodetic coordinates through the
+ road's map projection ($ROAD_CRG_MPRO). Each returns 1 on success, 0 for an unknown
+ id, a null output or (crgEvalxyz2llh, crgEvalllh2xyz) a road without a projection.
+ ======================================================================================
+
+ East, north and height of the local point (x, y, z) of a contact point's road: the
+ point turned about the reference line's first point by the origin's heading, then
+ shifted by the origin.
+
+ # Safety
+ `e`, `n` and `h` are null or point to a double each.
+ */
+int crgEvalxyz2enh(int cpId, double x, double y, double z, double *e, double *n, double *h);
+
+/*
+ The local point (x, y, z) of a contact point's road at east, north and height.
+
+ # Safety
+ `x`, `y` and `z` are null or point to a double each.
+ */
+int crgEvalenh2xyz(int cpId, double e, double n, double h, double *x, double *y, double *z);
+
+/*
+ Latitude and longitude (degrees) and height on the global ellipsoid (WGS 84 unless
+ the road's map section names another) of the local point (x, y, z).
+
+ # Safety
+ `lat`, `lon` and `alt` are null or point to a double each.
+ */
+int crgEvalxyz2llh(int cpId, double x, double y, double z, double *lat, double *lon, double *alt);
+
+/*
+ The local point (x, y, z) at latitude and longitude (degrees) and height on the
+ global ellipsoid.
+
+ # Safety
+ `x`, `y` and `z` are null or point to a double each.
+ */
+int crgEvalllh2xyz(int cpId, double lat, double lon, double alt, double *x, double *y, double *z);
+
+/*
+ The global origin of a data set: offsets x, y, z (m) and heading phi (rad), as
+ `REFERENCE_LINE_OFFSET_*` gave them and modifiers that moved the road changed them.
+
+ # Safety
+ `x`, `y`, `z` and `phi` are null or point to a double each.
+ */
+int crgDataSetGetGlobalOrigin(int dataSetId, double *x, double *y, double *z, double *phi);
+
+/*
+ Sets the global origin of a data set. This moves the global frame, not the road:
+ x/y/z answers stay, east/north/height and geodetic answers change.
+ */
+int crgDataSetSetGlobalOrigin(int dataSetId, double x, double y, double z, double phi);
+
 #ifdef __cplusplus
 }  // extern "C"
 #endif  // __cplusplus

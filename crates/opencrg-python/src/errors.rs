@@ -56,6 +56,6 @@ pub(crate) fn to_py(e: Error) -> PyErr {
             Err(e) => e,
         }),
         Error::Check(_) => CheckError::new_err(text),
-        Error::Setting(_) | Error::Eval(_) | Error::Analysis(_) => PyValueError::new_err(text),
+        Error::Setting(_) | Error::Eval(_) | Error::Analysis(_) | Error::Geo(_) => PyValueError::new_err(text),
     }
 }

@@ -69,7 +69,7 @@ pub(crate) fn road_read<R: Copy>(func: &str, id: c_int, on_error: R, f: impl FnO
 }
 
 /// `on_road_mut` inside the panic guard, `on_error` for an unknown id. `f` must not send messages.
-fn road_write<R: Copy>(func: &str, id: c_int, on_error: R, f: impl FnOnce(&mut Road) -> R) -> R {
+pub(crate) fn road_write<R: Copy>(func: &str, id: c_int, on_error: R, f: impl FnOnce(&mut Road) -> R) -> R {
     guard(func, on_error, || on_road_mut(func, id, f).unwrap_or(on_error))
 }
 
@@ -149,6 +149,11 @@ pub extern "C" fn crgCheck(dataSetId: c_int) -> c_int {
             return 0;
         };
         report::send("crgCheck", events);
+        if let Some(found) = on_road("crgCheck", dataSetId, opencrg::map_disagreements) {
+            for sentence in found {
+                msg::warn(&format!("crgCheck: {sentence}"));
+            }
+        }
         match checked {
             Ok(()) => 1,
             Err(e) => {

@@ -29,6 +29,7 @@ mod base {
     pub mod settings;
 }
 mod model {
+    pub mod georef;
     pub mod grid;
     pub mod header;
     pub mod refline;
@@ -38,6 +39,7 @@ mod model {
 }
 mod read {
     pub(crate) mod build;
+    pub(crate) mod map_section;
     pub mod reader;
     pub(crate) mod records;
     pub(crate) mod syntax;
@@ -55,6 +57,11 @@ mod query {
     pub(crate) mod normal;
     pub(crate) mod plain;
     pub(crate) mod search;
+}
+mod geo {
+    pub mod earth;
+    pub(crate) mod helmert;
+    pub(crate) mod map_check;
 }
 mod analysis {
     pub mod iri;
@@ -74,11 +81,13 @@ pub use base::settings;
 use base::{compat, error, memory};
 use export::gltf;
 pub use export::{mesh, mesh_files, simplify};
-pub use model::{grid, header, refline, report};
+pub use geo::earth::Earth;
+pub use geo::map_check::map_disagreements;
+pub use model::{georef, grid, header, refline, report};
 use model::{road, sample_index};
 use query::{contact, eval, interpolation, normal, plain, search};
 pub use read::reader;
-use read::{records, syntax};
+use read::{map_section, records, syntax};
 pub use write::writer;
 
 pub use base::setting_values::{Continuation, CpOption, CurvMode, Modifier};

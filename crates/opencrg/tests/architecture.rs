@@ -111,7 +111,7 @@ fn core_modules_use_only_lower_layers() {
         "base" => 0,
         "model" => 1,
         "read" | "write" => 2,
-        "query" => 3,
+        "query" | "geo" => 3,
         "analysis" | "export" | "" => 4,
         other => panic!("src/{other}: a folder that is not a layer of ARCHITECTURE.md"),
     };

@@ -64,6 +64,10 @@ pub enum Error {
     /// An analysis was refused (a track outside the road, a profile too short for it).
     #[error("{0}")]
     Analysis(String),
+    /// A position on the earth could not be computed (a road without a map projection,
+    /// a point the projection cannot take).
+    #[error("{0}")]
+    Geo(String),
     /// A file could not be written.
     #[error("{path}: cannot write: {source}")]
     Write {

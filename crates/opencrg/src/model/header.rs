@@ -21,8 +21,12 @@ pub struct Header {
     pub options: Settings,
     /// Modifiers: the defaults, or exactly those of a `$ROAD_CRG_MODS` section.
     pub modifiers: Settings,
-    /// `$ROAD_CRG_MPRO` key/value pairs.
+    /// `$ROAD_CRG_MPRO` key/value pairs as written (keys lower case).
     pub mpro: Vec<(String, String)>,
+    /// The map projection the `$ROAD_CRG_MPRO` section describes, if it has one.
+    pub map: Option<crate::georef::MapProjection>,
+    /// Tolerances of the map checks (`CHECK_PRO`, `CHECK_WGS` of `$ROAD_CRG_OPTS`).
+    pub map_tolerances: crate::georef::MapTolerances,
     /// Files read through `$ROAD_CRG_FILE`, in reading order.
     pub references: Vec<PathBuf>,
     /// `WARN_MSGS` from the options section, if given.
@@ -74,6 +78,8 @@ pub struct RoadParams {
     pub v_left: Option<f64>,
     /// `LONG_SECTION_V_INCREMENT`.
     pub v_increment: Option<f64>,
+    /// `REFERENCE_LINE_OFFSET_X`, `_Y`, `_Z` and `_PHI`: the global origin.
+    pub offset: [Option<f64>; 4],
     /// WGS84 values (`REFERENCE_LINE_START_LON` ... `REFERENCE_LINE_END_ALT`) and any
     /// other key of the section, in file order.
     pub extra: Vec<(String, f64)>,
@@ -82,6 +88,10 @@ pub struct RoadParams {
     /// gave (it keeps their values, though).
     pub top_file_gives: EndsGiven,
 }
+
+/// The keywords of the global origin, in the order of [`RoadParams::offset`].
+pub const OFFSET_KEYS: [&str; 4] =
+    ["REFERENCE_LINE_OFFSET_X", "REFERENCE_LINE_OFFSET_Y", "REFERENCE_LINE_OFFSET_Z", "REFERENCE_LINE_OFFSET_PHI"];
 
 /// End values of the reference line that a file gave.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -150,8 +160,26 @@ impl RoadParams {
             .iter()
             .filter_map(|&(word, key)| copy.slot(key).map(|v| (word.to_ascii_uppercase(), v)))
             .collect();
+        for (word, v) in OFFSET_KEYS.iter().zip(self.offset) {
+            out.extend(v.map(|v| (word.to_string(), v)));
+        }
         out.extend(self.extra.iter().map(|(k, v)| (k.to_ascii_uppercase(), *v)));
         out
+    }
+
+    /// A value kept among the other keys (`extra`), by its keyword in any case: for
+    /// example `REFERENCE_LINE_START_LAT`.
+    pub fn extra_value(&self, keyword: &str) -> Option<f64> {
+        self.extra.iter().rev().find(|(k, _)| k.eq_ignore_ascii_case(keyword)).map(|(_, v)| *v)
+    }
+
+    /// The WGS 84 position given for the start (`false`) or end (`true`) of the
+    /// reference line: latitude and longitude in degrees, altitude in metres (`None`
+    /// where the file gives no such pair; the altitude 0 when it gives none).
+    pub fn wgs84(&self, end: bool) -> Option<[f64; 3]> {
+        let which = if end { "END" } else { "START" };
+        let get = |what: &str| self.extra_value(&format!("REFERENCE_LINE_{which}_{what}"));
+        Some([get("LAT")?, get("LON")?, get("ALT").unwrap_or(0.0)])
     }
 
     /// The value a keyword sets.

@@ -1,6 +1,7 @@
 //! The road: reference line and elevation grid, built from a file's header and data.
 
 use crate::compat::Compat;
+use crate::georef::GlobalOrigin;
 use crate::grid::{Grid, PrefetchHint};
 use crate::header::{DataFormat, Header};
 use crate::refline::{LineFinding, RefLine};
@@ -21,6 +22,9 @@ pub struct Road {
     pub(crate) options: Settings,
     pub(crate) modifiers: Settings,
     pub(crate) index: SampleIndex,
+    /// Where the local frame sits in the projected frame (kept by modifiers that move
+    /// the road, so that its surface stays where it is on the earth).
+    pub(crate) origin: GlobalOrigin,
     /// Reciprocals of the increments, for the cache prefetch of elevation lookups.
     pub(crate) prefetch_hint: PrefetchHint,
     /// The reference behaviour the road follows.
@@ -185,6 +189,28 @@ impl Road {
     /// Warnings collected while reading (ignored lines, refused values).
     pub fn warnings(&self) -> &[String] {
         &self.header.warnings
+    }
+
+    /// The global origin: how the local x/y/z frame sits in the projected east/north/height
+    /// frame (`REFERENCE_LINE_OFFSET_*`, kept up to date by modifiers that move the road).
+    pub fn global_origin(&self) -> GlobalOrigin {
+        self.origin
+    }
+
+    /// Sets the global origin. This moves the global frame, not the road: local x/y/z
+    /// answers stay as they are, east/north/height answers change.
+    pub fn set_global_origin(&mut self, origin: GlobalOrigin) {
+        self.origin = origin;
+    }
+
+    /// East, north and height of the local point (x, y, z).
+    pub fn xyz_to_enh(&self, x: f64, y: f64, z: f64) -> [f64; 3] {
+        self.origin.to_global((self.line.x_first, self.line.y_first), [x, y, z])
+    }
+
+    /// The local point (x, y, z) at east, north and height (e, n, h).
+    pub fn enh_to_xyz(&self, e: f64, n: f64, h: f64) -> [f64; 3] {
+        self.origin.to_local((self.line.x_first, self.line.y_first), [e, n, h])
     }
 
     /// The data format of the file that held the data.

@@ -179,7 +179,9 @@ impl Road {
             *x += dx;
             *y += dy;
         };
+        let first = (l.x_first, l.y_first);
         mv(&mut l.x_first, &mut l.y_first);
+        self.origin = self.origin.after_move(first, (l.x_first, l.y_first), angle, dz);
         mv(&mut l.x_last, &mut l.y_last);
         for (x, y) in l.x.iter_mut().zip(l.y.iter_mut()) {
             mv(x, y);

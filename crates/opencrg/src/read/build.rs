@@ -87,7 +87,9 @@ impl Road {
         header.warnings.extend(warnings);
         let options = header.options.clone();
         let modifiers = header.modifiers.clone();
+        let [x, y, z, phi] = header.road.offset.map(|v| v.unwrap_or(0.0));
         let mut road = Road {
+            origin: crate::georef::GlobalOrigin { x, y, z, phi },
             header,
             line,
             grid,

@@ -6,7 +6,9 @@
 //! always win; of the referenced files, the first that defines a section is used.
 
 use crate::error::{Error, Location, Result};
-use crate::header::{Channel, DataFormat, Header, RoadKey, RoadParams, ROAD_KEYS};
+use crate::georef::MapTolerances;
+use crate::header::{Channel, DataFormat, Header, RoadKey, RoadParams, OFFSET_KEYS, ROAD_KEYS};
+use crate::map_section::{self, MapEntry};
 use crate::settings::{self, Accepts, Family, Settings};
 use crate::syntax::{self, key_value, lookup, parse_f64_prefix, parse_i32_prefix, Section, Tag};
 use std::path::{Path, PathBuf};
@@ -60,6 +62,8 @@ pub(crate) struct DataSource {
 
 struct Loader {
     header: Header,
+    /// Where each `$ROAD_CRG_MPRO` keyword stood, parallel to `header.mpro`.
+    mpro_places: Vec<(PathBuf, usize)>,
     data: Option<DataSource>,
     option_level: Option<usize>,
     modifier_level: Option<usize>,
@@ -70,6 +74,7 @@ struct Loader {
 pub(crate) fn read(path: &Path) -> Result<(Header, Option<DataSource>)> {
     let mut loader = Loader::new(path);
     loader.read_file(path, 0)?;
+    loader.resolve_map()?;
     Ok((loader.header, loader.data))
 }
 
@@ -81,6 +86,7 @@ pub(crate) fn read_bytes(bytes: Vec<u8>, name: &Path) -> Result<(Header, Option<
     }
     let mut loader = Loader::new(name);
     let offset = loader.parse(name, &bytes, 0)?;
+    loader.resolve_map()?;
     let data = match offset {
         Some(offset) => {
             if loader.data.is_some() {
@@ -105,11 +111,14 @@ impl Loader {
                 options: Settings::default_options(),
                 modifiers: Settings::default_modifiers(),
                 mpro: Vec::new(),
+                map: None,
+                map_tolerances: MapTolerances::default(),
                 references: Vec::new(),
                 warn_msgs: None,
                 warnings: Vec::new(),
                 top_file_numbers_sections: false,
             },
+            mpro_places: Vec::new(),
             data: None,
             option_level: None,
             modifier_level: None,
@@ -139,6 +148,16 @@ fn open(path: &Path) -> Result<FileBytes> {
 }
 
 impl Loader {
+    /// Resolves the `$ROAD_CRG_MPRO` keywords read into the header's map projection.
+    fn resolve_map(&mut self) -> Result<()> {
+        let entries: Vec<MapEntry> = (self.header.mpro.iter().zip(&self.mpro_places))
+            .filter(|((k, _), _)| map_section::is_keyword(k))
+            .map(|((key, value), (path, line))| MapEntry { key, value, path, line: *line })
+            .collect();
+        self.header.map = map_section::resolve(&entries)?;
+        Ok(())
+    }
+
     fn read_file(&mut self, path: &Path, level: usize) -> Result<()> {
         let canonical = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
         if self.stack.contains(&canonical) {
@@ -215,7 +234,16 @@ impl Loader {
                 Section::Options | Section::Modifiers => self.setting_line(section, path, line.number, &text, level)?,
                 Section::Mpro => {
                     if let Some((k, v)) = key_value(&text) {
+                        if !map_section::is_keyword(&k) {
+                            self.header.warnings.push(format!(
+                                "{}:{}: $ROAD_CRG_MPRO: unknown keyword '{}' kept but not used",
+                                path.display(),
+                                line.number,
+                                k.to_ascii_uppercase()
+                            ));
+                        }
                         self.header.mpro.push((k, syntax::strip_inline_comment(v).trim().to_string()));
+                        self.mpro_places.push((path.to_path_buf(), line.number));
                     }
                 }
                 Section::DataDef => self.data_def_line(path, line.number, &text, level)?,
@@ -266,7 +294,8 @@ impl Loader {
         };
         let field = key.to_ascii_uppercase();
         let v = finite_value(path, number, &field, value)?;
-        if key.starts_with("reference_line_offset_") {
+        if let Some(i) = OFFSET_KEYS.iter().position(|k| k.eq_ignore_ascii_case(&key)) {
+            self.header.road.offset[i] = Some(v);
             return Ok(());
         }
         match lookup(&ROAD_KEYS, &key) {
@@ -307,6 +336,14 @@ impl Loader {
         let Some((key, value)) = key_value(text) else { return Ok(()) };
         let field = key.to_ascii_uppercase();
         let at = format!("{}:{number}: {field}", path.display());
+        if family == Family::Option && (key == "check_pro" || key == "check_wgs") {
+            let v = finite_value(path, number, &field, value)?;
+            if !(v > 0.0) {
+                return Err(Error::format(path, Location::Line(number), field, "tolerance must be positive"));
+            }
+            let t = &mut self.header.map_tolerances;
+            *(if key == "check_pro" { &mut t.projected } else { &mut t.geodesic }) = v;
+        }
         let Some(setting) = settings::by_keyword(family, &key) else {
             if family == Family::Option && IGNORED_OPTION_KEYWORDS.iter().any(|k| key.starts_with(k)) {
                 return Ok(());

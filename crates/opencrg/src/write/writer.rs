@@ -87,6 +87,14 @@ pub fn write_to(road: &Road, out: &mut impl Write, format: DataFormat) -> io::Re
     if g.layout == VLayout::Indexed {
         kv("LONG_SECTION_V_INCREMENT", g.v_inc)?;
     }
+    // The global origin as it is now (modifiers that moved the road changed it), where
+    // the file gave one or it is not the default.
+    let o = road.global_origin();
+    if road.header.road.offset.iter().any(Option::is_some) || o != Default::default() {
+        for (k, v) in crate::header::OFFSET_KEYS.iter().zip([o.x, o.y, o.z, o.phi]) {
+            kv(k, v)?;
+        }
+    }
     for (k, v) in &road.header.road.extra {
         kv(k, *v)?;
     }
