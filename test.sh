@@ -50,5 +50,5 @@ python3 -m venv target/python-venv
 no_cargo=$(printf '%s' "$PATH" | tr ':' '\n' | grep -v -e cargo -e rustup | paste -sd: -)
 env PATH="$no_cargo" sh -c '! command -v cargo >/dev/null'
 env PATH="$no_cargo" target/python-venv/bin/pip install -q --upgrade pip
-env PATH="$no_cargo" target/python-venv/bin/pip install -q numpy pytest "dask[distributed]" "$wheel"
+env PATH="$no_cargo" target/python-venv/bin/pip install -q numpy pytest "dask[distributed]" pyproj "$wheel"
 env PATH="$no_cargo" OPENCRG_CLI="$PWD/target/release/opencrg" target/python-venv/bin/python -m pytest -q -p no:logging crates/opencrg-python/tests

@@ -148,6 +148,30 @@ class Road:
         """Writes the surface mesh (simplified within max_error when given) as .obj, .stl, .ply or .glb."""
     def roughness(self, tracks: list[float] | None = None, segment: float = 100.0) -> list[dict[str, object]]:
         """IRI (m/km, whole track and per segment) and ISO 8608 PSD class of wheel tracks at v."""
+    @property
+    def global_origin(self) -> tuple[float, float, float, float]:
+        """(x, y, z, phi): the local frame in the projected frame; setting it moves the frame, not the road."""
+    @global_origin.setter
+    def global_origin(self, origin: tuple[float, float, float, float]) -> None: ...
+    @property
+    def map_projection(self) -> dict[str, object] | None:
+        """The $ROAD_CRG_MPRO section resolved (ellipsoids, transformation, projection), or None."""
+    @overload
+    def xyz_to_enh(self, x: float, y: float, z: float) -> tuple[float, float, float]: ...
+    @overload
+    def xyz_to_enh(self, x: _ArrayLike, y: _ArrayLike, z: _ArrayLike) -> tuple[_Floats, _Floats, _Floats]: ...
+    @overload
+    def enh_to_xyz(self, e: float, n: float, h: float) -> tuple[float, float, float]: ...
+    @overload
+    def enh_to_xyz(self, e: _ArrayLike, n: _ArrayLike, h: _ArrayLike) -> tuple[_Floats, _Floats, _Floats]: ...
+    @overload
+    def xyz_to_llh(self, x: float, y: float, z: float) -> tuple[float, float, float]: ...
+    @overload
+    def xyz_to_llh(self, x: _ArrayLike, y: _ArrayLike, z: _ArrayLike) -> tuple[_Floats, _Floats, _Floats]: ...
+    @overload
+    def llh_to_xyz(self, lat: float, lon: float, alt: float) -> tuple[float, float, float]: ...
+    @overload
+    def llh_to_xyz(self, lat: _ArrayLike, lon: _ArrayLike, alt: _ArrayLike) -> tuple[_Floats, _Floats, _Floats]: ...
 
 @overload
 def iri(profile: _ArrayLike, dx: float) -> float:

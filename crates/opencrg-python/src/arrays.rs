@@ -1,43 +1,52 @@
-//! Python inputs to slices and results back: two coordinates given as scalars or
+//! Python inputs to slices and results back: coordinates given as scalars or
 //! array-likes of any shape are broadcast together and read as contiguous, aligned float64; the
-//! results take their shape, or are Python floats when both inputs were scalars.
+//! results take their shape, or are Python floats when every input was a scalar.
 
 use numpy::{PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 
-/// Two broadcast coordinate arrays, borrowed for reading.
-pub(crate) struct Pair<'py> {
-    a: PyReadonlyArrayDyn<'py, f64>,
-    b: PyReadonlyArrayDyn<'py, f64>,
+/// `N` broadcast coordinate arrays, borrowed for reading.
+pub(crate) struct Points<'py, const N: usize> {
+    arrays: [PyReadonlyArrayDyn<'py, f64>; N],
     shape: Vec<usize>,
     scalar: bool,
 }
 
-impl<'py> Pair<'py> {
-    /// Reads two coordinates (numbers, sequences or arrays of any numeric type).
-    pub(crate) fn new(a: &Bound<'py, PyAny>, b: &Bound<'py, PyAny>) -> PyResult<Self> {
-        let py = a.py();
+impl<'py, const N: usize> Points<'py, N> {
+    /// Reads `N` coordinates (numbers, sequences or arrays of any numeric type).
+    pub(crate) fn new(inputs: [&Bound<'py, PyAny>; N]) -> PyResult<Self> {
+        let py = inputs[0].py();
         let np = py.import("numpy")?;
         let float64 = np.getattr("float64")?;
-        let a = np.call_method1("asarray", (a, &float64))?;
-        let b = np.call_method1("asarray", (b, &float64))?;
-        let scalar = a.getattr("ndim")?.extract::<usize>()? == 0 && b.getattr("ndim")?.extract::<usize>()? == 0;
-        let both = np.call_method1("broadcast_arrays", (a, b))?;
+        let mut arrays = Vec::with_capacity(N);
+        let mut scalar = true;
+        for input in inputs {
+            let array = np.call_method1("asarray", (input, &float64))?;
+            scalar &= array.getattr("ndim")?.extract::<usize>()? == 0;
+            arrays.push(array);
+        }
+        let all = np.call_method1("broadcast_arrays", PyTuple::new(py, arrays)?)?;
         // Contiguous and aligned (a copy where it is not: broadcast views, slices with a
         // step, arrays in byte buffers received from other processes).
         let contiguous = |i: usize| -> PyResult<PyReadonlyArrayDyn<'py, f64>> {
-            let array = np.call_method1("require", (both.get_item(i)?, &float64, "CA"))?;
+            let array = np.call_method1("require", (all.get_item(i)?, &float64, "CA"))?;
             Ok(array.cast_into::<PyArrayDyn<f64>>()?.readonly())
         };
-        let (a, b) = (contiguous(0)?, contiguous(1)?);
-        let shape = a.shape().to_vec();
-        Ok(Pair { a, b, shape, scalar })
+        let arrays: Vec<_> = (0..N).map(contiguous).collect::<PyResult<_>>()?;
+        let arrays: [PyReadonlyArrayDyn<'py, f64>; N] =
+            arrays.try_into().unwrap_or_else(|_| unreachable!("N arrays were made"));
+        let shape = arrays[0].shape().to_vec();
+        Ok(Points { arrays, shape, scalar })
     }
 
-    /// The two inputs as slices of the same length.
-    pub(crate) fn slices(&self) -> PyResult<(&[f64], &[f64])> {
-        Ok((self.a.as_slice()?, self.b.as_slice()?))
+    /// The inputs as slices of the same length.
+    pub(crate) fn slices(&self) -> PyResult<[&[f64]; N]> {
+        let mut out = [&[][..]; N];
+        for (slot, array) in out.iter_mut().zip(&self.arrays) {
+            *slot = array.as_slice()?;
+        }
+        Ok(out)
     }
 
     /// The results: floats for scalar inputs, else arrays of the inputs' shape; one

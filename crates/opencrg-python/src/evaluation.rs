@@ -1,7 +1,7 @@
 //! Running the core's evaluations on Python inputs: the batch calls without the GIL,
 //! and options set by their Python names.
 
-use crate::arrays::Pair;
+use crate::arrays::Points;
 use crate::errors;
 use crate::names;
 use ::opencrg as crg;
@@ -98,8 +98,8 @@ pub(crate) fn evaluate<'py>(
     a: &Bound<'py, PyAny>,
     b: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let points = Pair::new(a, b)?;
-    let (sa, sb) = points.slices()?;
+    let points = Points::new([a, b])?;
+    let [sa, sb] = points.slices()?;
     let outputs = py.detach(|| run(cp, call, sa, sb));
     points.results(py, outputs)
 }

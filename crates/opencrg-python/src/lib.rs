@@ -17,6 +17,7 @@ mod arrays;
 mod contact;
 mod errors;
 mod evaluation;
+mod georef;
 mod names;
 mod recipe;
 mod road;

@@ -34,6 +34,8 @@ pub(crate) enum Step {
     SetModifier(u32, Value),
     RemoveModifier(u32),
     ClearModifiers,
+    /// The global origin set: x, y, z, phi.
+    SetGlobalOrigin([f64; 4]),
 }
 
 impl Step {
@@ -47,6 +49,7 @@ impl Step {
                 road.modifiers_mut().remove(id);
             }
             Step::ClearModifiers => road.modifiers_mut().clear(),
+            Step::SetGlobalOrigin([x, y, z, phi]) => road.set_global_origin(crg::georef::GlobalOrigin { x, y, z, phi }),
         }
         Ok(())
     }
@@ -108,6 +111,7 @@ impl Recipe {
                     Step::SetModifier(id, Value::Double(v)) => ("set", *id, *v).into_pyobject(py)?.into_any(),
                     Step::RemoveModifier(id) => ("remove", *id).into_pyobject(py)?.into_any(),
                     Step::ClearModifiers => ("clear",).into_pyobject(py)?.into_any(),
+                    Step::SetGlobalOrigin(o) => ("origin", o.to_vec()).into_pyobject(py)?.into_any(),
                 })
             })
             .collect::<PyResult<Vec<_>>>()?;
@@ -144,6 +148,7 @@ impl Recipe {
                     "apply" => Step::ApplyModifiers,
                     "remove" => Step::RemoveModifier(step.get_item(1)?.extract()?),
                     "clear" => Step::ClearModifiers,
+                    "origin" => Step::SetGlobalOrigin(step.get_item(1)?.extract()?),
                     "set" => {
                         let id: u32 = step.get_item(1)?.extract()?;
                         let value = step.get_item(2)?;

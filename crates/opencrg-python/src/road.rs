@@ -68,7 +68,7 @@ impl Road {
 
     /// Takes `step` on the road and notes it in the recipe: contact points made before
     /// see the change at their next call.
-    fn change(&mut self, py: Python<'_>, step: Step) -> PyResult<()> {
+    pub(crate) fn change(&mut self, py: Python<'_>, step: Step) -> PyResult<()> {
         self.version += 1;
         self.grid = None;
         let road = Arc::make_mut(&mut self.inner);

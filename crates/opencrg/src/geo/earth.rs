@@ -109,7 +109,7 @@ impl Earth {
             geodetic
         } else {
             let c = Earth::step(&self.local, &self.local_centred, geodetic)?;
-            let g = super::helmert::forward(&self.map.datum, [c.0, c.1, c.2]);
+            let g = super::helmert::local_to_global(&self.map.datum, [c.0, c.1, c.2]);
             Earth::step(&self.global_centred, &self.global, (g[0], g[1], g[2]))?
         };
         Ok([lat.to_degrees(), lon.to_degrees(), h])
@@ -126,7 +126,7 @@ impl Earth {
             geodetic
         } else {
             let g = Earth::step(&self.global, &self.global_centred, geodetic)?;
-            let c = super::helmert::backward(&self.map.datum, [g.0, g.1, g.2]);
+            let c = super::helmert::global_to_local(&self.map.datum, [g.0, g.1, g.2]);
             Earth::step(&self.local_centred, &self.local, (c[0], c[1], c[2]))?
         };
         let p = Earth::step(&self.local, &self.projected, local)?;

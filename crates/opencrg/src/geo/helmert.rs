@@ -1,6 +1,8 @@
 //! The datum transformations of the specification between earth-centred coordinates of
-//! the local and of the global ellipsoid: seven-parameter Helmert transformations in
-//! the coordinate-frame convention, `X_global = T + (1 + ds) R X_local`.
+//! the global and of the local ellipsoid: seven-parameter Helmert transformations in
+//! the coordinate-frame convention, `X_local = T + (1 + ds) R X_global` (the parameters
+//! describe the way from the global datum to the local one, as the MATLAB tools read
+//! them; the way back is the inverse).
 //!
 //! - `HN7`: R is the exact rotation, `R = (Rx(rx) Ry(ry) Rz(rz))ᵀ`; its inverse is its
 //!   transpose.
@@ -70,8 +72,8 @@ fn exact(r: [f64; 3]) -> Matrix {
     product(&product(&rx, &ry), &rz)
 }
 
-/// Earth-centred coordinates of the local datum to the global one.
-pub(crate) fn forward(d: &Datum, x: [f64; 3]) -> [f64; 3] {
+/// Earth-centred coordinates of the global datum to the local one.
+pub(crate) fn global_to_local(d: &Datum, x: [f64; 3]) -> [f64; 3] {
     let t = d.translation;
     let (m, scale) = match d.kind {
         DatumKind::Nop => return x,
@@ -83,8 +85,8 @@ pub(crate) fn forward(d: &Datum, x: [f64; 3]) -> [f64; 3] {
     std::array::from_fn(|i| t[i] + scale * r[i])
 }
 
-/// Earth-centred coordinates of the global datum to the local one.
-pub(crate) fn backward(d: &Datum, x: [f64; 3]) -> [f64; 3] {
+/// Earth-centred coordinates of the local datum to the global one.
+pub(crate) fn local_to_global(d: &Datum, x: [f64; 3]) -> [f64; 3] {
     let t = d.translation;
     let shifted: [f64; 3] = std::array::from_fn(|i| x[i] - t[i]);
     match d.kind {
@@ -94,7 +96,7 @@ pub(crate) fn backward(d: &Datum, x: [f64; 3]) -> [f64; 3] {
         DatumKind::Hs7 => {
             let negated =
                 Datum { kind: DatumKind::Hs7, ds: -d.ds, rotation: d.rotation.map(|r| -r), translation: t.map(|v| -v) };
-            forward(&negated, x)
+            global_to_local(&negated, x)
         }
     }
 }
@@ -113,14 +115,14 @@ mod tests {
                 rotation: [3.49e-6, 5.39e-7, -8.34e-6],
                 translation: [-604.7, -72.4, -424.4],
             };
-            let there = forward(&d, x);
+            let there = global_to_local(&d, x);
             assert!((there[0] - x[0]).abs() > 100.0);
-            let back = backward(&d, there);
+            let back = local_to_global(&d, there);
             assert!((0..3).all(|i| (back[i] - x[i]).abs() < 1e-6), "{kind:?}: {back:?}");
         }
         // The simple form's inverse is approximate: within a millimetre here.
         let d = Datum { kind: DatumKind::Hs7, ds: 1e-6, rotation: [1e-6, -2e-6, 3e-6], translation: [1.0, 2.0, 3.0] };
-        let back = backward(&d, forward(&d, x));
+        let back = local_to_global(&d, global_to_local(&d, x));
         assert!((0..3).all(|i| (back[i] - x[i]).abs() < 1e-3), "{back:?}");
     }
 }

@@ -109,7 +109,8 @@ impl Ellipsoid {
     }
 }
 
-/// The datum transformation between the local and the global ellipsoid (`TRAN_*`).
+/// The datum transformation between the global and the local ellipsoid (`TRAN_*`; the
+/// parameters take earth-centred coordinates of the global datum to the local one).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Datum {
     /// Which transformation.
@@ -132,7 +133,7 @@ pub enum DatumKind {
     Hl7,
     /// `HN7`: seven-parameter Helmert with the exact rotation (coordinate-frame convention).
     Hn7,
-    /// `HS7`: the linearised rotation with the scale on its diagonal; the inverse negates
+    /// `HS7`: the linearised rotation with the scale on its diagonal; the way back negates
     /// every parameter.
     Hs7,
 }
@@ -231,7 +232,7 @@ pub struct MapProjection {
     pub global: Ellipsoid,
     /// The ellipsoid of the projection (`LELL_*`).
     pub local: Ellipsoid,
-    /// The transformation from the local to the global ellipsoid's datum (`TRAN_*`).
+    /// The transformation between the global and the local ellipsoid's datum (`TRAN_*`).
     pub datum: Datum,
     /// The projection (`PROJ_*`).
     pub projection: Projection,
