@@ -2,7 +2,7 @@
 
 use opencrg::header::Channel;
 use opencrg::settings::{name, Value};
-use opencrg::{Road, Settings};
+use opencrg::{Earth, Road, Settings};
 use serde_json::{json, Value as Json};
 
 fn channel_name(c: &Channel) -> String {
@@ -38,6 +38,25 @@ fn settings_text(s: &Settings) -> String {
     }
 }
 
+/// The start (`false`) or end (`true`) of the reference line in WGS 84: latitude,
+/// longitude (degrees), height, and where it comes from (the map projection, or the
+/// file's keywords when it has none).
+fn wgs84(road: &Road, end: bool) -> Option<([f64; 3], &'static str)> {
+    if let Ok(earth) = Earth::of(road) {
+        let l = road.reference_line();
+        let i = if end { l.n - 1 } else { 0 };
+        return earth.xyz_to_llh(road, [l.x[i], l.y[i], l.z_at(i)]).ok().map(|p| (p, "map projection"));
+    }
+    road.header().road.wgs84(end).map(|p| (p, "file keywords"))
+}
+
+fn wgs84_json(road: &Road, end: bool) -> Json {
+    match wgs84(road, end) {
+        Some(([lat, lon, alt], from)) => json!({ "lat": lat, "lon": lon, "alt": alt, "from": from }),
+        None => Json::Null,
+    }
+}
+
 /// The facts `info` reports, as JSON.
 pub fn facts(road: &Road, path: &str) -> Json {
     let h = road.header();
@@ -47,6 +66,7 @@ pub fn facts(road: &Road, path: &str) -> Json {
     let (v0, v1) = road.v_range();
     let (du, dv) = road.increments();
     let nan = g.values().iter().filter(|z| z.is_nan()).count();
+    let o = road.global_origin();
     json!({
         "file": path,
         "format": road.format().name(),
@@ -65,6 +85,12 @@ pub fn facts(road: &Road, path: &str) -> Json {
         },
         "elevation": { "min": s.z_min, "max": s.z_max, "mean_start": s.z_mean_start, "mean_end": s.z_mean_end },
         "nan_cells": nan,
+        "global_origin": { "x": o.x, "y": o.y, "z": o.z, "phi": o.phi },
+        "map_projection": h.map.as_ref().map(|m| json!({
+            "projection": m.projection.name, "local_ellipsoid": m.local.name, "global_ellipsoid": m.global.name,
+            "transformation": format!("{:?}", m.datum.kind).to_uppercase(),
+        })),
+        "wgs84": { "start": wgs84_json(road, false), "end": wgs84_json(road, true) },
         "options": settings_json(road.options()),
         "modifiers": settings_json(road.modifiers()),
         "warnings": road.warnings(),
@@ -116,6 +142,19 @@ pub fn text(road: &Road, path: &str) -> String {
     );
     line("elevation", format!("{:.4} .. {:.4} m", s.z_min, s.z_max));
     line("NaN cells", format!("{}", g.values().iter().filter(|z| z.is_nan()).count()));
+    let o = road.global_origin();
+    if o != Default::default() {
+        line("global origin", format!("x {} m, y {} m, z {} m, heading {} rad", o.x, o.y, o.z, o.phi));
+    }
+    if let Some(m) = &h.map {
+        let datum = format!("{:?}", m.datum.kind).to_uppercase();
+        line("map", format!("{} on {}, {datum} to {}", m.projection.name, m.local.name, m.global.name));
+    }
+    for (end, label) in [(false, "start WGS 84"), (true, "end WGS 84")] {
+        if let Some(([lat, lon, alt], from)) = wgs84(road, end) {
+            line(label, format!("lat {lat:.9}, lon {lon:.9}, alt {alt:.3} m ({from})"));
+        }
+    }
     line("options", settings_text(road.options()));
     line("modifiers", settings_text(road.modifiers()));
     for w in road.warnings() {

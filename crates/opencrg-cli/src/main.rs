@@ -16,6 +16,7 @@
 
 mod canvas;
 mod export;
+mod geojson;
 mod info;
 mod render;
 mod roughness;
@@ -87,7 +88,7 @@ enum Command {
         #[command(flatten)]
         options: EvalOptions,
     },
-    /// The surface for 3D tools: a mesh at the grid nodes or simplified (.obj, .stl, .ply, .glb), or a height or normal map (.png).
+    /// The surface for 3D tools: a mesh at the grid nodes or simplified (.obj, .stl, .ply, .glb), a height or normal map (.png), or the reference line and outline in WGS 84 (.geojson).
     Export {
         /// The road file (checked and its modifiers applied unless --raw, as `eval` does).
         road: PathBuf,
@@ -319,6 +320,9 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
         }
         Command::Check { road } => {
             let mut r = load(&road)?;
+            for sentence in opencrg::map_disagreements(&r) {
+                eprintln!("opencrg: warning: {}: {sentence}", road.display());
+            }
             return Ok(match r.check() {
                 Ok(()) => {
                     println!("{}: passes the checks", road.display());
@@ -367,10 +371,20 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
         }
         Command::Export { road, output, ranges, normal_map, max_error, options } => {
             let (u, v) = ranges.parse()?;
-            let cp = contact_point(&road, &options)?;
-            let request = export::Request { u, v, normal_map, max_error };
-            let done = export::export(&cp, &output, &request).map_err(|e| format!("{}: {e}", road.display()))?;
-            eprintln!("{done}");
+            let mut cp = contact_point(&road, &options)?;
+            let is_geojson = output.extension().is_some_and(|e| e.eq_ignore_ascii_case("geojson"));
+            let done = if is_geojson {
+                if u.is_some() || v.is_some() || normal_map || max_error.is_some() {
+                    return Err(format!(
+                        "{}: a .geojson export takes no ranges, --normal-map or --max-error",
+                        road.display()
+                    ));
+                }
+                geojson::write(&mut cp, &output)
+            } else {
+                export::export(&cp, &output, &export::Request { u, v, normal_map, max_error })
+            };
+            eprintln!("{}", done.map_err(|e| format!("{}: {e}", road.display()))?);
         }
         Command::View { road, output, ranges, max_vertices, options } => {
             let (u, v) = ranges.parse()?;

@@ -313,3 +313,63 @@ fn export_writes_meshes_and_maps() {
     }
     assert!(!Path::new("x.obj").exists() && !Path::new("x.gltf").exists());
 }
+
+/// A road in UTM zone 32U near 48 N 11.7 E; `keywords` adds WGS 84 start keywords.
+fn georeferenced_road(d: &Path, keywords: &str) -> PathBuf {
+    let header = format!(
+        "$ROAD_CRG\nREFERENCE_LINE_OFFSET_X = 691000.0\nREFERENCE_LINE_OFFSET_Y = 5322000.0\n\
+         REFERENCE_LINE_OFFSET_PHI = 0.2\n{keywords}$\n$ROAD_CRG_MPRO\nPROJ_NM = 'UTM_32U'\n$\n"
+    );
+    let p = d.join("earth.crg");
+    std::fs::write(
+        &p,
+        RoadSpec::straight(40.0, 3.0, 0.5, 0.5).starting_at(2.0, 1.0, 0.5).with_header_text(&header).to_crg(),
+    )
+    .unwrap();
+    p
+}
+
+#[test]
+fn info_check_and_geojson_place_the_road_on_the_earth() {
+    let d = dir("earth");
+    let path = georeferenced_road(&d, "");
+    let road = Road::load(&path).unwrap();
+    let earth = opencrg::Earth::of(&road).unwrap();
+    let l = road.reference_line();
+    let [lat, lon, _] = earth.xyz_to_llh(&road, [l.x[0], l.y[0], l.z_at(0)]).unwrap();
+    let info = text(&opencrg(&["info", path.to_str().unwrap()], None).stdout);
+    assert!(info.contains(&format!("lat {lat:.9}, lon {lon:.9}")), "{info}");
+    assert!(info.contains("UTM_32U on WGS84, NOP to WGS84"), "{info}");
+
+    let out = d.join("earth.geojson");
+    let done = opencrg(&["export", path.to_str().unwrap(), out.to_str().unwrap()], None);
+    assert!(done.status.success(), "{}", text(&done.stderr));
+    let doc: serde_json::Value = serde_json::from_slice(&std::fs::read(&out).unwrap()).unwrap();
+    let line = doc["features"][0]["geometry"]["coordinates"].as_array().unwrap();
+    assert_eq!(line.len(), l.n);
+    assert!((line[0][0].as_f64().unwrap() - lon).abs() < 1e-12 && (line[0][1].as_f64().unwrap() - lat).abs() < 1e-12);
+    let ring = doc["features"][1]["geometry"]["coordinates"][0].as_array().unwrap();
+    assert_eq!((ring.len(), &ring[0]), (2 * l.n + 1, &ring[2 * l.n]));
+
+    // WGS 84 keywords 30 m off the projected start: check warns, naming both places.
+    let far = format!("REFERENCE_LINE_START_LAT = {}\nREFERENCE_LINE_START_LON = {lon}\n", lat + 30.0 / 111_195.0);
+    let path = georeferenced_road(&d, &far);
+    let checked = opencrg(&["check", path.to_str().unwrap()], None);
+    let warning = text(&checked.stderr);
+    assert!(
+        warning.contains("WGS 84 start") && warning.contains("CHECK_PRO") && warning.contains("reference line's start")
+    );
+    let near = format!("REFERENCE_LINE_START_LAT = {lat}\nREFERENCE_LINE_START_LON = {lon}\n");
+    let path = georeferenced_road(&d, &near);
+    let quiet = text(&opencrg(&["check", path.to_str().unwrap()], None).stderr);
+    assert!(!quiet.contains("WGS 84"), "{quiet}");
+
+    // A road without a projection: one line, status 2, no file.
+    let plain = write_road(&d);
+    let refused = d.join("plain.geojson");
+    let done = opencrg(&["export", plain.to_str().unwrap(), refused.to_str().unwrap()], None);
+    assert_eq!(done.status.code(), Some(2));
+    assert_eq!(text(&done.stderr).lines().count(), 1, "{}", text(&done.stderr));
+    assert!(!refused.exists());
+    std::fs::remove_dir_all(&d).unwrap();
+}
