@@ -28,6 +28,18 @@ target/release/opencrg export examples/data/demo_road.crg target/demo_road.glb
 target/release/opencrg export examples/data/demo_road.crg target/demo_part.glb --u 30:60 --v -1:2
 target/release/opencrg export examples/data/demo_road.crg target/demo_simple.glb --max-error 0.002
 NODE_PATH=target/gltf-validator/node_modules node crates/opencrg-cli/tests/validate_glb.js target/demo_road.glb target/demo_part.glb target/demo_simple.glb
+# The README's georeferenced road: its start in WGS 84 and its GeoJSON (valid JSON, the
+# reference line's first position that start).
+target/release/opencrg info examples/data/demo_road_utm.crg --json >target/demo_road_utm.json
+target/release/opencrg export examples/data/demo_road_utm.crg target/demo_road_utm.geojson
+python3 - <<'PY'
+import json
+start = json.load(open("target/demo_road_utm.json"))["wgs84"]["start"]
+line = json.load(open("target/demo_road_utm.geojson"))["features"][0]["geometry"]["coordinates"]
+assert start["from"] == "map projection" and abs(start["lat"] - 48.02331) < 1e-4, start
+assert abs(line[0][0] - start["lon"]) < 1e-12 and abs(line[0][1] - start["lat"]) < 1e-12, line[0]
+print("georeferenced demo road: start", start["lat"], start["lon"])
+PY
 # The 3D view of the demo road in headless Chromium (software WebGL), checked on a screenshot.
 target/release/opencrg view examples/data/demo_road.crg target/demo_view.html
 rm -rf target/chromium-profile target/demo_view.png
