@@ -336,13 +336,13 @@ impl Loader {
         let Some((key, value)) = key_value(text) else { return Ok(()) };
         let field = key.to_ascii_uppercase();
         let at = format!("{}:{number}: {field}", path.display());
+        // The map checks' tolerances (unknown to the reference, which warns of them as of any
+        // unknown keyword, below); a value that is no positive number leaves the default.
         if family == Family::Option && (key == "check_pro" || key == "check_wgs") {
-            let v = finite_value(path, number, &field, value)?;
-            if !(v > 0.0) {
-                return Err(Error::format(path, Location::Line(number), field, "tolerance must be positive"));
+            if let Some(v) = parse_f64_prefix(value).filter(|v| v.is_finite() && *v > 0.0) {
+                let t = &mut self.header.map_tolerances;
+                *(if key == "check_pro" { &mut t.projected } else { &mut t.geodesic }) = v;
             }
-            let t = &mut self.header.map_tolerances;
-            *(if key == "check_pro" { &mut t.projected } else { &mut t.geodesic }) = v;
         }
         let Some(setting) = settings::by_keyword(family, &key) else {
             if family == Family::Option && IGNORED_OPTION_KEYWORDS.iter().any(|k| key.starts_with(k)) {
