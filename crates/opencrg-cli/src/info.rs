@@ -88,7 +88,7 @@ pub fn facts(road: &Road, path: &str) -> Json {
         "global_origin": { "x": o.x, "y": o.y, "z": o.z, "phi": o.phi },
         "map_projection": h.map.as_ref().map(|m| json!({
             "projection": m.projection.name, "local_ellipsoid": m.local.name, "global_ellipsoid": m.global.name,
-            "transformation": format!("{:?}", m.datum.kind).to_uppercase(),
+            "transformation": m.datum.kind.name(),
         })),
         "wgs84": { "start": wgs84_json(road, false), "end": wgs84_json(road, true) },
         "options": settings_json(road.options()),
@@ -147,7 +147,7 @@ pub fn text(road: &Road, path: &str) -> String {
         line("global origin", format!("x {} m, y {} m, z {} m, heading {} rad", o.x, o.y, o.z, o.phi));
     }
     if let Some(m) = &h.map {
-        let datum = format!("{:?}", m.datum.kind).to_uppercase();
+        let datum = m.datum.kind.name();
         line("map", format!("{} on {}, {datum} to {}", m.projection.name, m.local.name, m.global.name));
     }
     for (end, label) in [(false, "start WGS 84"), (true, "end WGS 84")] {

@@ -114,7 +114,7 @@ impl Road {
         let d = pyo3::types::PyDict::new(py);
         d.set_item("global_ellipsoid", (&m.global.name, m.global.a, m.global.b))?;
         d.set_item("local_ellipsoid", (&m.local.name, m.local.a, m.local.b))?;
-        d.set_item("transformation", format!("{:?}", m.datum.kind).to_uppercase())?;
+        d.set_item("transformation", m.datum.kind.name())?;
         d.set_item("ds", m.datum.ds)?;
         d.set_item("rotation", m.datum.rotation.to_vec())?;
         d.set_item("translation", m.datum.translation.to_vec())?;

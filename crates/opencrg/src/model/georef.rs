@@ -102,11 +102,6 @@ impl Ellipsoid {
         };
         Some(Ellipsoid { name: name.to_string(), a, b })
     }
-
-    /// Whether `name` is one the specification lists (`USERDEFINED` included).
-    pub fn is_known_name(name: &str) -> bool {
-        NAMED_ELLIPSOIDS.iter().any(|e| e.0.eq_ignore_ascii_case(name))
-    }
 }
 
 /// The datum transformation between the global and the local ellipsoid (`TRAN_*`; the
@@ -139,6 +134,16 @@ pub enum DatumKind {
 }
 
 impl DatumKind {
+    /// The specification's name of the kind.
+    pub fn name(self) -> &'static str {
+        match self {
+            DatumKind::Nop => "NOP",
+            DatumKind::Hl7 => "HL7",
+            DatumKind::Hn7 => "HN7",
+            DatumKind::Hs7 => "HS7",
+        }
+    }
+
     /// The kind of a specification name (any case).
     pub fn named(name: &str) -> Option<DatumKind> {
         match name.to_ascii_uppercase().as_str() {
@@ -168,8 +173,10 @@ pub struct Projection {
     pub false_north: f64,
 }
 
-/// UTM band letters, south to north (C to M lie in the southern hemisphere).
+/// UTM band letters, south to north.
 const UTM_BANDS: &str = "CDEFGHJKLMNPQRSTUVWX";
+/// How many of them lie in the southern hemisphere (C to M).
+const UTM_SOUTHERN_BANDS: usize = 10;
 
 impl Projection {
     /// The projection of a `PROJ_NM` value (any case) with the `PROJ_*` values of the
@@ -209,7 +216,7 @@ impl Projection {
                     .ok()
                     .filter(|n| (1..=60).contains(n))
                     .ok_or_else(|| format!("'{}' is no UTM zone number of 1 to 60", &z[..z.len() - 1]))?;
-                let north = if position < UTM_BANDS.find('N').unwrap_or(10) { 1e7 } else { 0.0 };
+                let north = if position < UTM_SOUTHERN_BANDS { 1e7 } else { 0.0 };
                 (0.9996, 0.0, deg(6.0 * f64::from(n) - 183.0), 5e5, north)
             }
             "TM" => {
@@ -291,6 +298,6 @@ mod tests {
         assert!((gk.lon0.to_degrees() - 12.0).abs() < 1e-12 && gk.false_east == 4_500_000.0);
         assert!(Projection::named("LAMBERT", [0.0; 5]).is_err());
         assert!(Ellipsoid::named("besseldhdn").is_some() && Ellipsoid::named("MARS").is_none());
-        assert!(Ellipsoid::named("USERDEFINED").is_none() && Ellipsoid::is_known_name("userdefined"));
+        assert!(Ellipsoid::named("USERDEFINED").is_none());
     }
 }

@@ -57,34 +57,31 @@ pub(crate) fn resolve(entries: &[MapEntry]) -> Result<Option<MapProjection>> {
             let b = number(&b_key, a)?;
             Ok(Ellipsoid { name: "USERDEFINED".into(), a, b })
         };
-        let checked = |e: Ellipsoid, at: Option<&MapEntry>| -> Result<Ellipsoid> {
+        // A user ellipsoid needs a positive semi-major axis and a semi-minor one no longer;
+        // the error names the line that made it user-defined.
+        let checked = |e: Ellipsoid, at: &MapEntry| -> Result<Ellipsoid> {
             if e.a > 0.0 && e.b > 0.0 && e.b <= e.a {
-                return Ok(e);
-            }
-            let at = at.or_else(|| find(&a_key)).or_else(|| find(&nm));
-            let message = if e.a <= 0.0 {
-                format!("a user-defined ellipsoid needs its semi-major axis {}", a_key.to_ascii_uppercase())
+                Ok(e)
+            } else if e.a <= 0.0 {
+                Err(fail(
+                    at,
+                    format!("a user-defined ellipsoid needs its semi-major axis {}", a_key.to_ascii_uppercase()),
+                ))
             } else {
-                format!("semi-axes {} and {} do not make an ellipsoid", e.a, e.b)
-            };
-            Err(match at {
-                Some(at) => fail(at, message),
-                None => Error::format(Path::new(""), Location::File, nm.to_ascii_uppercase(), message),
-            })
+                Err(fail(at, format!("semi-axes {} and {} do not make an ellipsoid", e.a, e.b)))
+            }
         };
-        match find(&nm) {
-            Some(e) => {
+        match (find(&nm), find(&a_key)) {
+            (Some(e), _) => {
                 let name = name_of(e.value);
                 if name.eq_ignore_ascii_case("USERDEFINED") {
-                    checked(user()?, Some(e))
-                } else if let Some(named) = Ellipsoid::named(name) {
-                    Ok(named)
+                    checked(user()?, e)
                 } else {
-                    Err(fail(e, format!("unknown ellipsoid '{name}'")))
+                    Ellipsoid::named(name).ok_or_else(|| fail(e, format!("unknown ellipsoid '{name}'")))
                 }
             }
-            None if find(&a_key).is_some() => checked(user()?, None),
-            None => Ok(Ellipsoid::wgs84()),
+            (None, Some(a)) => checked(user()?, a),
+            (None, None) => Ok(Ellipsoid::wgs84()),
         }
     };
     let global = ellipsoid("gell")?;
