@@ -194,3 +194,41 @@ fn every_new_keyword_is_written_back_in_every_format() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn wgs84_keywords_are_checked_against_the_road() {
+    // No projection: the geodesic start-to-end distance against the x/y one (300 m east).
+    let keywords = |east_m: f64| {
+        let lon_end = 11.0 + east_m / (111_319.49 * 48f64.to_radians().cos());
+        format!(
+            "$ROAD_CRG\nREFERENCE_LINE_START_LAT = 48.0\nREFERENCE_LINE_START_LON = 11.0\n\
+             REFERENCE_LINE_END_LAT = 48.0\nREFERENCE_LINE_END_LON = {lon_end}\n$\n"
+        )
+    };
+    let straight = |header: &str| RoadSpec::straight(300.0, 4.0, 0.5, 0.5).with_header_text(header).build().unwrap();
+    assert!(opencrg::map_disagreements(&straight(&keywords(300.0))).is_empty());
+    let found = opencrg::map_disagreements(&straight(&keywords(330.0)));
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert!(found[0].contains("CHECK_WGS") && found[0].contains("300.000 m"), "{}", found[0]);
+    // A tolerance of 50 m lets the 30 m pass.
+    let tolerant = format!("{}$ROAD_CRG_OPTS\nCHECK_WGS = 50\n$\n", keywords(330.0));
+    assert!(opencrg::map_disagreements(&straight(&tolerant)).is_empty());
+
+    // With a projection: each given position against the line's own start and end.
+    let road = curved(&utm("")).build().unwrap();
+    let earth = Earth::of(&road).unwrap();
+    let l = road.reference_line();
+    let start = earth.xyz_to_llh(&road, [l.x[0], l.y[0], l.z_at(0)]).unwrap();
+    let given = |lat: f64| {
+        format!(
+            "{}$ROAD_CRG\nREFERENCE_LINE_START_LAT = {lat}\nREFERENCE_LINE_START_LON = {}\n\
+             REFERENCE_LINE_START_ALT = {}\n$\n",
+            utm(""),
+            start[1],
+            start[2]
+        )
+    };
+    assert!(opencrg::map_disagreements(&curved(&given(start[0])).build().unwrap()).is_empty());
+    let off = opencrg::map_disagreements(&curved(&given(start[0] + 1e-5)).build().unwrap());
+    assert!(off.len() == 1 && off[0].contains("WGS 84 start") && off[0].contains("CHECK_PRO"), "{off:?}");
+}
