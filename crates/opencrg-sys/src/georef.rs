@@ -12,6 +12,25 @@ use opencrg::georef::GlobalOrigin;
 use opencrg::{ContactPoint, Earth};
 use std::ffi::c_int;
 
+thread_local! {
+    /// The chain of the last map projection this thread converted with: building one
+    /// reads its projection definitions (microseconds), a conversion takes far less.
+    static LAST_EARTH: std::cell::RefCell<Option<Earth>> = const { std::cell::RefCell::new(None) };
+}
+
+/// `f` with the chain of the road's map projection (built again only when the projection
+/// differs from the last one this thread used); `None` for a road without one.
+fn with_earth<T>(road: &opencrg::Road, f: impl FnOnce(&Earth) -> Option<T>) -> Option<T> {
+    let map = road.header().map.as_ref()?;
+    LAST_EARTH.with(|cell| {
+        let mut last = cell.borrow_mut();
+        if last.as_ref().is_none_or(|e| e.map() != map) {
+            *last = Some(Earth::new(map).ok()?);
+        }
+        f(last.as_ref()?)
+    })
+}
+
 /// Writes a triple into three outputs; 0 when one is missing or `f` gives nothing.
 fn three_out(
     outs: (Option<&mut f64>, Option<&mut f64>, Option<&mut f64>),
@@ -104,7 +123,7 @@ pub unsafe extern "C" fn crgEvalxyz2llh(
 ) -> c_int {
     // SAFETY: the contract above.
     let outs = unsafe { (out(lat), out(lon), out(alt)) };
-    on_cp_road("crgEvalxyz2llh", cpId, outs, |road| Earth::of(road).and_then(|e| e.xyz_to_llh(road, [x, y, z])).ok())
+    on_cp_road("crgEvalxyz2llh", cpId, outs, |road| with_earth(road, |e| e.xyz_to_llh(road, [x, y, z]).ok()))
 }
 
 /// The local point (x, y, z) at latitude and longitude (degrees) and height on the
