@@ -1,13 +1,13 @@
 //! `opencrg export ROAD OUT.geojson`: the reference line and the road's outline in WGS 84
 //! (RFC 7946: longitude, latitude, height), through the road's map projection.
 
-use opencrg::{ContactPoint, Earth};
+use opencrg::{ContactPoint, Earth, Road};
 use serde_json::{json, Value};
 use std::path::Path;
 
-/// Longitude, latitude and height of the local point (x, y, z) of the road.
-fn position(earth: &Earth, cp: &ContactPoint, xyz: [f64; 3]) -> Result<Value, String> {
-    let [lat, lon, alt] = earth.xyz_to_llh(cp.road(), xyz).map_err(|e| e.to_string())?;
+/// Longitude, latitude and height of the local point (x, y, z) of `road`.
+fn position(earth: &Earth, road: &Road, xyz: [f64; 3]) -> Result<Value, String> {
+    let [lat, lon, alt] = earth.xyz_to_llh(road, xyz).map_err(|e| e.to_string())?;
     Ok(json!([lon, lat, alt]))
 }
 
@@ -16,17 +16,16 @@ pub fn document(cp: &mut ContactPoint) -> Result<Value, String> {
     let road = cp.road().clone();
     let earth = Earth::of(&road).map_err(|e| e.to_string())?;
     let l = road.reference_line();
-    let line = (0..l.n).map(|i| position(&earth, cp, [l.x[i], l.y[i], l.z_at(i)])).collect::<Result<Vec<_>, _>>()?;
+    let line = (0..l.n).map(|i| position(&earth, &road, [l.x[i], l.y[i], l.z_at(i)])).collect::<Result<Vec<_>, _>>()?;
     // The outline: the right border along u, the left one back, closed; each point at the
     // height of the reference line across from it.
     let (v_right, v_left) = road.v_range();
     let mut ring = Vec::with_capacity(2 * l.n + 1);
-    for (v, forward) in [(v_right, true), (v_left, false)] {
-        let indices: Vec<usize> = if forward { (0..l.n).collect() } else { (0..l.n).rev().collect() };
-        for i in indices {
-            let (x, y) = cp.uv_to_xy(l.u_at(i), v).map_err(|e| e.to_string())?;
-            ring.push(position(&earth, cp, [x, y, l.z_at(i)])?);
-        }
+    let along_right = (0..l.n).map(|i| (i, v_right));
+    let back_left = (0..l.n).rev().map(|i| (i, v_left));
+    for (i, v) in along_right.chain(back_left) {
+        let (x, y) = cp.uv_to_xy(l.u_at(i), v).map_err(|e| e.to_string())?;
+        ring.push(position(&earth, &road, [x, y, l.z_at(i)])?);
     }
     ring.push(ring[0].clone());
     let name = road.header().path.display().to_string();

@@ -30,6 +30,15 @@ fn convert<'py>(
     points.results(py, outputs)
 }
 
+impl Road {
+    /// The road and the chain of its map projection; `ValueError` for a road without one.
+    fn on_earth(&self) -> PyResult<(std::sync::Arc<crg::Road>, crg::Earth)> {
+        let road = self.shared();
+        let earth = crg::Earth::of(&road).map_err(errors::to_py)?;
+        Ok((road, earth))
+    }
+}
+
 #[pymethods]
 impl Road {
     /// The global origin `(x, y, z, phi)`: how the local frame sits in the projected
@@ -86,8 +95,7 @@ impl Road {
         y: &Bound<'py, PyAny>,
         z: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let road = self.shared();
-        let earth = crg::Earth::of(&road).map_err(errors::to_py)?;
+        let (road, earth) = self.on_earth()?;
         convert(py, [x, y, z], |p| earth.xyz_to_llh(&road, p))
     }
 
@@ -100,8 +108,7 @@ impl Road {
         lon: &Bound<'py, PyAny>,
         alt: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let road = self.shared();
-        let earth = crg::Earth::of(&road).map_err(errors::to_py)?;
+        let (road, earth) = self.on_earth()?;
         convert(py, [lat, lon, alt], |p| earth.llh_to_xyz(&road, p))
     }
 

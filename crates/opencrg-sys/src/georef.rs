@@ -31,32 +31,22 @@ fn with_earth<T>(road: &opencrg::Road, f: impl FnOnce(&Earth) -> Option<T>) -> O
     })
 }
 
-/// Writes a triple into three outputs; 0 when one is missing or `f` gives nothing.
-fn three_out(
-    outs: (Option<&mut f64>, Option<&mut f64>, Option<&mut f64>),
-    f: impl FnOnce() -> Option<[f64; 3]>,
-) -> c_int {
-    let (Some(a), Some(b), Some(c)) = outs else { return 0 };
-    match f() {
-        Some([x, y, z]) => {
-            (*a, *b, *c) = (x, y, z);
-            1
-        }
-        None => 0,
-    }
-}
-
-/// Runs `f` on a contact point's road and writes its triple.
+/// Runs `f` on a contact point's road and writes its triple: 1, or 0 when an output is
+/// null, the id unknown or `f` gives nothing.
 fn on_cp_road(
     func: &str,
     cp_id: c_int,
     outs: (Option<&mut f64>, Option<&mut f64>, Option<&mut f64>),
     f: impl FnOnce(&opencrg::Road) -> Option<[f64; 3]>,
 ) -> c_int {
-    if outs.0.is_none() || outs.1.is_none() || outs.2.is_none() {
-        return 0;
-    }
-    cp_call(func, cp_id, 0, |cp: &mut ContactPoint| three_out(outs, || f(cp.road())))
+    let (Some(a), Some(b), Some(c)) = outs else { return 0 };
+    cp_call(func, cp_id, 0, |cp: &mut ContactPoint| match f(cp.road()) {
+        Some([x, y, z]) => {
+            (*a, *b, *c) = (x, y, z);
+            1
+        }
+        None => 0,
+    })
 }
 
 /// ======================================================================================
