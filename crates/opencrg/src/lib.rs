@@ -75,6 +75,39 @@ mod export {
     pub mod simplify;
 }
 pub mod synth;
+pub mod tools {
+    //! Making new roads: from a road (cut, flip, append, resample, filter, slope and
+    //! banking moved between the reference line and the grid) and from points (a
+    //! reference line through them, a point cloud gridded along one); and comparing two
+    //! surfaces. Each makes a new [`Road`](crate::Road); the input is left as it was. The
+    //! result keeps the header's comments, options, modifiers and map data, adds a
+    //! comment saying what was done, and is written with [`write`](crate::write).
+    mod append;
+    mod channels;
+    mod compare;
+    mod cut;
+    mod draft;
+    mod filter;
+    mod flip;
+    mod generate;
+    mod import;
+    mod nodes;
+    mod path;
+    mod point_files;
+    mod resample;
+
+    pub use append::append;
+    pub use channels::{change_channel, ChannelAction, LineChannel};
+    pub use compare::{compare, Comparison};
+    pub use cut::cut;
+    pub use filter::{filter, Filter};
+    pub use flip::flip;
+    pub use generate::{generate, Layout, Points, Surface};
+    pub use import::{import, Import};
+    pub use nodes::Progress;
+    pub use point_files::read_points;
+    pub use resample::resample;
+}
 
 pub use analysis::{iri, psd, roughness};
 pub use base::settings;
@@ -87,7 +120,7 @@ pub use model::{georef, grid, header, refline, report};
 use model::{road, sample_index};
 use query::{contact, eval, interpolation, normal, plain, search};
 pub use read::reader;
-use read::{map_section, records, syntax};
+use read::{build, map_section, records, syntax};
 pub use write::writer;
 
 pub use base::setting_values::{Continuation, CpOption, CurvMode, Modifier};

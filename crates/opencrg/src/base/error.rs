@@ -68,6 +68,10 @@ pub enum Error {
     /// a point the projection cannot take).
     #[error("{0}")]
     Geo(String),
+    /// A tool refused what it was asked (a range outside the road, points that do not
+    /// cover it, roads that cannot be joined).
+    #[error("{0}")]
+    Request(String),
     /// A file could not be written.
     #[error("{path}: cannot write: {source}")]
     Write {

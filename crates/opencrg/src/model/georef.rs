@@ -36,6 +36,15 @@ impl GlobalOrigin {
         [first.0 + dx * c + dy * s, first.1 - dx * s + dy * c, q[2] - self.z]
     }
 
+    /// The same origin for a road whose reference line now starts at `new_first` instead
+    /// of `first` (the origin turns the road about its first point): every local point
+    /// keeps its east, north and height.
+    pub(crate) fn for_start(&self, first: (f64, f64), new_first: (f64, f64)) -> GlobalOrigin {
+        let (s, c) = self.phi.sin_cos();
+        let (dx, dy) = (first.0 - new_first.0, first.1 - new_first.1);
+        GlobalOrigin { x: self.x + dx - (dx * c - dy * s), y: self.y + dy - (dx * s + dy * c), ..*self }
+    }
+
     /// The origin after the road was moved rigidly: turned by `angle`, its first point
     /// carried from `first` to `moved_first`, its heights raised by `dz`. Every surface
     /// point keeps its east, north and height.

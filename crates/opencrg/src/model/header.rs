@@ -2,7 +2,7 @@
 //! channels. The reading (syntax, sections, references) lives in `read`.
 
 use crate::settings::Settings;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Everything the header sections of a file and the files it references say.
 #[derive(Debug, Clone)]
@@ -37,6 +37,29 @@ pub struct Header {
     /// Evaluation finds v cells by index only then: the reference library forgets that
     /// a referenced file numbered them, and looks numbered sections up by position.
     pub top_file_numbers_sections: bool,
+}
+
+impl Header {
+    /// A header that gives nothing yet: no comments or channels, the default options
+    /// and modifiers, format KRBI. `path` names the file it stands for.
+    pub fn new(path: &Path) -> Header {
+        Header {
+            path: path.to_path_buf(),
+            comments: Vec::new(),
+            road: RoadParams::default(),
+            format: DataFormat::Krbi,
+            channels: Vec::new(),
+            options: Settings::default_options(),
+            modifiers: Settings::default_modifiers(),
+            mpro: Vec::new(),
+            map: None,
+            map_tolerances: crate::georef::MapTolerances::default(),
+            references: Vec::new(),
+            warn_msgs: None,
+            warnings: Vec::new(),
+            top_file_numbers_sections: false,
+        }
+    }
 }
 
 /// The `$ROAD_CRG` parameters as written in the file (`None` where absent).

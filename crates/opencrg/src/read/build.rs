@@ -66,6 +66,45 @@ impl Road {
         let (u_first, u_inc) = u_axis(&header.road, &err)?;
         let (z, b, nu) = read_records(&header, &data, &cols, &sections, u_first, u_inc)?;
         let warnings = channel_warnings(&header, &path, &cols, &b, nu, u_first, u_inc);
+        let mut header = header;
+        header.warnings.extend(warnings);
+        Road::finish(header, &path, Parts { cols, sections, z, b, nu, u_first, u_inc }, load)
+    }
+
+    /// A road from a header and the values its channels hold, as if read from a file
+    /// with that header: `line` holds the reference line channels the header's `D:`
+    /// lines name (heading, slope, banking; one value per cross section), `z` the
+    /// elevations long section by long section. The way new roads are made from old ones.
+    pub(crate) fn assemble(header: Header, line: LineValues, z: Vec<f32>, load: LoadOptions) -> Result<Road> {
+        let path = header.path.clone();
+        let err = |field: &str, msg: String| Error::format(&path, Location::File, field, msg);
+        let (cols, sections) = channel_layout(&header, &err)?;
+        let (u_first, u_inc) = u_axis(&header.road, &err)?;
+        let nv = sections.v.len();
+        let nu = z.len() / nv;
+        if nu < 2 || nu * nv != z.len() || line.phi.len() != nu {
+            return Err(err("data section", format!("{} values do not make {nv} long sections", z.len())));
+        }
+        if nu.saturating_mul(nv) > MAX_CELLS {
+            return Err(err("data section", format!("{nu} x {nv} cells exceed the supported size")));
+        }
+        let b = Builder {
+            cols,
+            x: Vec::new(),
+            y: Vec::new(),
+            u: Vec::new(),
+            phi: line.phi,
+            bank: line.bank.unwrap_or_default(),
+            slope: line.slope.unwrap_or_default(),
+            first_nan_heading: None,
+        };
+        Road::finish(header, &path, Parts { cols, sections, z, b, nu, u_first, u_inc }, load)
+    }
+
+    /// The grid and the reference line from the decoded parts, then what is derived.
+    fn finish(header: Header, path: &Path, parts: Parts, load: LoadOptions) -> Result<Road> {
+        let err = |field: &str, msg: String| Error::format(path, Location::File, field, msg);
+        let Parts { cols, sections, z, b, nu, u_first, u_inc } = parts;
         let LongSections { v, v_first, v_last, v_inc, layout, .. } = sections;
         let nv = v.len();
         let grid = Grid {
@@ -83,8 +122,6 @@ impl Road {
         };
         let line = refline::RefLine::from_records(&header.road, &cols, b, nu, u_first, u_inc)
             .map_err(|m| err("reference line", m))?;
-        let mut header = header;
-        header.warnings.extend(warnings);
         let options = header.options.clone();
         let modifiers = header.modifiers.clone();
         let [x, y, z, phi] = header.road.offset.map(|v| v.unwrap_or(0.0));
@@ -116,6 +153,27 @@ impl Road {
         });
         Ok(road)
     }
+}
+
+/// The reference line channels of a road being assembled, one value per cross section.
+pub(crate) struct LineValues {
+    /// Heading (the first value is the header's start heading).
+    pub phi: Vec<f64>,
+    /// Slope, when the header names a slope channel.
+    pub slope: Option<Vec<f64>>,
+    /// Banking, when the header names a banking channel.
+    pub bank: Option<Vec<f64>>,
+}
+
+/// What a road is finished from: the channel layout, the grid and line values, the u axis.
+struct Parts {
+    cols: ColumnMap,
+    sections: LongSections,
+    z: Vec<f32>,
+    b: Builder,
+    nu: usize,
+    u_first: f64,
+    u_inc: f64,
 }
 
 /// The long sections of a file: their columns and v positions, in v order.

@@ -6,10 +6,9 @@
 //! always win; of the referenced files, the first that defines a section is used.
 
 use crate::error::{Error, Location, Result};
-use crate::georef::MapTolerances;
-use crate::header::{Channel, DataFormat, Header, RoadKey, RoadParams, OFFSET_KEYS, ROAD_KEYS};
+use crate::header::{Channel, DataFormat, Header, RoadKey, OFFSET_KEYS, ROAD_KEYS};
 use crate::map_section::{self, MapEntry};
-use crate::settings::{self, Accepts, Family, Settings};
+use crate::settings::{self, Accepts, Family};
 use crate::syntax::{self, key_value, lookup, parse_f64_prefix, parse_i32_prefix, Section, Tag};
 use std::path::{Path, PathBuf};
 
@@ -102,22 +101,7 @@ pub(crate) fn read_bytes(bytes: Vec<u8>, name: &Path) -> Result<(Header, Option<
 impl Loader {
     fn new(path: &Path) -> Self {
         Loader {
-            header: Header {
-                path: path.to_path_buf(),
-                comments: Vec::new(),
-                road: RoadParams::default(),
-                format: DataFormat::Krbi,
-                channels: Vec::new(),
-                options: Settings::default_options(),
-                modifiers: Settings::default_modifiers(),
-                mpro: Vec::new(),
-                map: None,
-                map_tolerances: MapTolerances::default(),
-                references: Vec::new(),
-                warn_msgs: None,
-                warnings: Vec::new(),
-                top_file_numbers_sections: false,
-            },
+            header: Header::new(path),
             mpro_places: Vec::new(),
             data: None,
             option_level: None,

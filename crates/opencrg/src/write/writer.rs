@@ -15,14 +15,24 @@ use crate::settings::{Accepts, Family, Settings, Value, SETTINGS};
 use std::io::{self, BufWriter, Write};
 use std::path::Path;
 
-/// Writes `road` to `path` in `format`.
+/// Writes `road` to `path` in `format`: all or nothing (the file is written beside
+/// `path` under a temporary name, then renamed; a failure leaves `path` as it was).
 pub fn write(road: &Road, path: impl AsRef<Path>, format: DataFormat) -> Result<()> {
     let path = path.as_ref();
     let err = |source| Error::Write { path: path.to_path_buf(), source };
-    let file = std::fs::File::create(path).map_err(err)?;
-    let mut out = BufWriter::with_capacity(1 << 20, file);
-    write_to(road, &mut out, format).map_err(err)?;
-    out.flush().map_err(err)
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let temporary = path.with_file_name(format!(".{name}.{}.partial", std::process::id()));
+    let written = (|| {
+        let file = std::fs::File::create(&temporary)?;
+        let mut out = BufWriter::with_capacity(1 << 20, file);
+        write_to(road, &mut out, format)?;
+        out.into_inner().map_err(|e| e.into_error())?.sync_all()?;
+        std::fs::rename(&temporary, path)
+    })();
+    if written.is_err() {
+        let _ = std::fs::remove_file(&temporary);
+    }
+    written.map_err(err)
 }
 
 /// The settings of a family written back to a file: those with a keyword, in table order

@@ -1,0 +1,223 @@
+//! Roads from point clouds: the points triangulated (Delaunay, with `spade`), each grid
+//! node interpolated linearly in the triangle around it.
+
+use super::filter::fill_nan;
+use super::generate::{along, Layout, Points};
+use super::nodes::{at_nodes, Progress};
+use crate::contact::ContactPoint;
+use crate::error::{Error, Result};
+use crate::road::Road;
+use spade::handles::FixedVertexHandle;
+use spade::{DelaunayTriangulation, HasPosition, Point2, PositionInTriangulation, Triangulation};
+use std::sync::Arc;
+
+/// How a cloud becomes a road.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Import {
+    /// The reference line's points (a smooth curve passes through them, as in
+    /// [`generate`](super::generate::generate)); without, a line fitted through the cloud.
+    pub refline: Option<Points>,
+    /// The road's width; without, as wide as the cloud reaches on both sides of the line.
+    pub width: Option<f64>,
+    /// Distance between cross sections, m.
+    pub u_inc: f64,
+    /// Distance between long sections, m.
+    pub v_inc: f64,
+    /// Nodes in triangles with an edge longer than this are NaN (holes in the cloud);
+    /// without, 5 times the larger increment, at least 0.5 m.
+    pub max_edge: Option<f64>,
+    /// Whether NaN nodes are filled (as [`Filter::FillNan`](super::filter::Filter)).
+    pub fill: bool,
+}
+
+#[derive(Clone, Copy)]
+struct CloudPoint {
+    p: Point2<f64>,
+    z: f64,
+}
+
+impl HasPosition for CloudPoint {
+    type Scalar = f64;
+    fn position(&self) -> Point2<f64> {
+        self.p
+    }
+}
+
+/// The road a point cloud (x, y, z) describes along a reference line.
+pub fn import(cloud: &Points, how: &Import, progress: Progress) -> Result<Road> {
+    let z = cloud.z.as_ref().ok_or_else(|| Error::Request("the points have no z".into()))?;
+    if cloud.len() < 3 {
+        return Err(Error::Request(format!("{} point(s): a surface needs at least three", cloud.len())));
+    }
+    let line = match &how.refline {
+        Some(l) => l.clone(),
+        None => fitted_line(cloud)?,
+    };
+    let width = match how.width {
+        Some(w) => w,
+        None => reach(cloud, &line, how)?,
+    };
+    let mut d = along(&line, Layout { width, u_inc: how.u_inc, v_inc: how.v_inc })?;
+    if line.z.is_none() {
+        // Heights near the grid's values keep single precision fine.
+        d.z_start = z.iter().sum::<f64>() / z.len() as f64;
+    }
+    progress("triangulating", 0, cloud.len() as u64);
+    let vertices: Vec<CloudPoint> =
+        (0..cloud.len()).map(|i| CloudPoint { p: Point2::new(cloud.x[i], cloud.y[i]), z: z[i] }).collect();
+    let tri: DelaunayTriangulation<CloudPoint> = DelaunayTriangulation::bulk_load(vertices)
+        .map_err(|e| Error::Request(format!("the points cannot be triangulated: {e}")))?;
+    progress("triangulating", cloud.len() as u64, cloud.len() as u64);
+    let max_edge = how.max_edge.unwrap_or((5.0 * how.u_inc.max(how.v_inc)).max(0.5));
+    let frame = Arc::new(d.frame(d.v[0], d.v[d.nv() - 1])?);
+    let line_z = d.line_z();
+    let v = d.v.clone();
+    let nodes = |_: &str, done, total| progress("gridding", done, total);
+    d.z = at_nodes(
+        &frame,
+        &v,
+        || None::<FixedVertexHandle>,
+        |hint, node| match interpolate(&tri, node.x, node.y, max_edge, hint) {
+            Some(z) => (z - line_z[node.iu]) as f32,
+            None => f32::NAN,
+        },
+        &nodes,
+    );
+    let covered = d.z.iter().filter(|z| !z.is_nan()).count();
+    let share = covered as f64 / d.z.len() as f64;
+    if share < 0.5 {
+        return Err(Error::Request(format!(
+            "the points cover {:.0} % of the road's {} nodes (triangles with edges up to {max_edge} m): \
+             the reference line or the width reaches beyond the cloud",
+            100.0 * share,
+            d.z.len()
+        )));
+    }
+    if how.fill {
+        let nu = d.nu();
+        fill_nan(&mut d.z, nu, &d.v);
+    }
+    let what = format!(
+        "imported by opencrg {} from {} points: {:.1} % of the nodes inside the cloud{}",
+        env!("CARGO_PKG_VERSION"),
+        cloud.len(),
+        100.0 * share,
+        if how.fill && covered < d.z.len() { ", the others filled" } else { "" }
+    );
+    d.into_road(&what)
+}
+
+/// z at (x, y), linear in the Delaunay triangle holding it; `None` outside the cloud or
+/// in a triangle with an edge longer than `max_edge`.
+fn interpolate(
+    tri: &DelaunayTriangulation<CloudPoint>,
+    x: f64,
+    y: f64,
+    max_edge: f64,
+    hint: &mut Option<FixedVertexHandle>,
+) -> Option<f64> {
+    let p = Point2::new(x, y);
+    let found = match *hint {
+        Some(h) => tri.locate_with_hint(p, h),
+        None => tri.locate(p),
+    };
+    let long = |a: Point2<f64>, b: Point2<f64>| (a.x - b.x).hypot(a.y - b.y) > max_edge;
+    match found {
+        PositionInTriangulation::OnVertex(v) => {
+            *hint = Some(v);
+            Some(tri.vertex(v).data().z)
+        }
+        PositionInTriangulation::OnEdge(e) => {
+            let e = tri.directed_edge(e);
+            let [a, b] = e.vertices();
+            *hint = Some(a.fix());
+            let (pa, pb) = (a.position(), b.position());
+            if long(pa, pb) {
+                return None;
+            }
+            let len = (pb.x - pa.x).hypot(pb.y - pa.y);
+            let t = ((x - pa.x).hypot(y - pa.y) / len).clamp(0.0, 1.0);
+            Some(a.data().z * (1.0 - t) + b.data().z * t)
+        }
+        PositionInTriangulation::OnFace(f) => {
+            let face = tri.face(f);
+            let [a, b, c] = face.vertices();
+            *hint = Some(a.fix());
+            let (pa, pb, pc) = (a.position(), b.position(), c.position());
+            if long(pa, pb) || long(pb, pc) || long(pc, pa) {
+                return None;
+            }
+            let [wa, wb, wc] = face.barycentric_interpolation(p);
+            Some(wa * a.data().z + wb * b.data().z + wc * c.data().z)
+        }
+        _ => None,
+    }
+}
+
+/// A line through the middle of the cloud: the centroids of slices across its main
+/// direction (at most 40, at least 5 m long), in order along it. Clouds of roads that
+/// turn back on themselves need a given line.
+fn fitted_line(cloud: &Points) -> Result<Points> {
+    let n = cloud.len() as f64;
+    let (mx, my) = (cloud.x.iter().sum::<f64>() / n, cloud.y.iter().sum::<f64>() / n);
+    let (mut sxx, mut sxy, mut syy) = (0.0, 0.0, 0.0);
+    for (x, y) in cloud.x.iter().zip(&cloud.y) {
+        let (dx, dy) = (x - mx, y - my);
+        sxx += dx * dx;
+        sxy += dx * dy;
+        syy += dy * dy;
+    }
+    // The main axis of the covariance.
+    let angle = 0.5 * (2.0 * sxy).atan2(sxx - syy);
+    let (c, s) = (angle.cos(), angle.sin());
+    let along: Vec<f64> = cloud.x.iter().zip(&cloud.y).map(|(x, y)| (x - mx) * c + (y - my) * s).collect();
+    let (lo, hi) = along.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &t| (a.min(t), b.max(t)));
+    let length = hi - lo;
+    let slices = ((length / 5.0).floor() as usize).clamp(2, 40);
+    let mut sums = vec![(0.0, 0.0, 0usize); slices];
+    for (i, &t) in along.iter().enumerate() {
+        let k = (((t - lo) / length * slices as f64) as usize).min(slices - 1);
+        sums[k].0 += cloud.x[i];
+        sums[k].1 += cloud.y[i];
+        sums[k].2 += 1;
+    }
+    let mut line = Points::default();
+    for (x, y, count) in sums.into_iter().filter(|s| s.2 > 0) {
+        line.x.push(x / count as f64);
+        line.y.push(y / count as f64);
+    }
+    if line.len() < 2 {
+        return Err(Error::Request("the points do not spread along a line to fit a road to".into()));
+    }
+    Ok(line)
+}
+
+/// How wide a road the cloud carries around the line: twice the smaller of the reaches
+/// to the right and to the left (each the 99th percentile of the points' |v| on that
+/// side, of at most 200,000 points), down to whole long section increments.
+fn reach(cloud: &Points, line: &Points, how: &Import) -> Result<f64> {
+    let probe = along(line, Layout { width: 2.0 * how.v_inc, u_inc: how.u_inc, v_inc: how.v_inc })?;
+    let frame = Arc::new(probe.frame(-1.0, 1.0)?);
+    let mut cp = ContactPoint::new(frame);
+    let step = (cloud.len() / 200_000).max(1);
+    let (mut right, mut left) = (Vec::new(), Vec::new());
+    for i in (0..cloud.len()).step_by(step) {
+        if let Ok((_, v)) = cp.xy_to_uv(cloud.x[i], cloud.y[i]) {
+            if v < 0.0 {
+                right.push(-v);
+            } else {
+                left.push(v);
+            }
+        }
+    }
+    let q = |mut d: Vec<f64>| {
+        d.sort_by(f64::total_cmp);
+        d.get((d.len() as f64 * 0.99) as usize).or(d.last()).copied().unwrap_or(0.0)
+    };
+    let half = q(right).min(q(left));
+    let width = 2.0 * (half / how.v_inc).floor() * how.v_inc;
+    if !(width >= 2.0 * how.v_inc) {
+        return Err(Error::Request("the points lie on one side of the line: give the width".into()));
+    }
+    Ok(width)
+}
