@@ -1,7 +1,7 @@
 """OpenCRG road surfaces: the reference C library's answers, numpy-vectorised, on a Rust core."""
 
 from os import PathLike
-from typing import NamedTuple, Optional, Union, overload
+from typing import Callable, NamedTuple, Optional, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -148,6 +148,27 @@ class Road:
         """Writes the surface mesh (simplified within max_error when given) as .obj, .stl, .ply or .glb."""
     def roughness(self, tracks: list[float] | None = None, segment: float = 100.0) -> list[dict[str, object]]:
         """IRI (m/km, whole track and per segment) and ISO 8608 PSD class of wheel tracks at v."""
+    def cut(self, u: tuple[float, float], v: tuple[float, float] | None = None) -> Road:
+        """The part between u = (from, to) (and v): the grid nodes inside, the surface where it was."""
+    def flip(self) -> Road:
+        """The same road driven the other way (u reversed, v mirrored), the surface where it was."""
+    def append(self, other: Road) -> Road:
+        """`other` continuing this road from its end point, heading and height."""
+    def resample(self, u_inc: float | None = None, v_inc: float | None = None) -> Road:
+        """The surface on a new grid, each node evaluated by the library."""
+    def filter(
+        self,
+        *,
+        gauss: float | None = None,
+        median: int | None = None,
+        limit: tuple[float, float] | None = None,
+        fill_nan: bool = False,
+    ) -> Road:
+        """The grid filtered by exactly one of gauss (sigma, m), median (N x N), limit, fill_nan."""
+    def slope(self, action: str) -> Road:
+        """The slope moved: "extract" (grid to line), "apply" (line to grid) or "remove"."""
+    def banking(self, action: str) -> Road:
+        """The banking moved: "extract", "apply" or "remove"."""
     @property
     def global_origin(self) -> tuple[float, float, float, float]:
         """(x, y, z, phi): the local frame in the projected frame; setting it moves the frame, not the road."""
@@ -182,6 +203,33 @@ def iri(profile: _ArrayLike, dx: float, segment: float) -> tuple[float, _Floats]
 
 def psd(profile: _ArrayLike, dx: float) -> dict[str, object]:
     """Displacement PSD (Welch, third-octave bands) of elevations dx m apart and its ISO 8608 class."""
+
+def generate(
+    points: _ArrayLike | _Path,
+    width: float,
+    u_inc: float,
+    v_inc: float,
+    surface: Callable[[_Floats, _Floats], _ArrayLike] | Road | None = None,
+) -> Road:
+    """A road along a smooth line through the points (x, y[, z]); surface(u, v) on arrays of shape (nu, nv)."""
+
+def import_points(
+    cloud: _ArrayLike | _Path,
+    u_inc: float,
+    v_inc: float,
+    *,
+    refline: _ArrayLike | _Path | None = None,
+    width: float | None = None,
+    max_edge: float | None = None,
+    fill_nan: bool = False,
+) -> Road:
+    """A road from a point cloud (n, 3), gridded along refline (or a line fitted through the cloud)."""
+
+def read_points(path: _Path) -> _Floats:
+    """The points of a CSV/XYZ, PLY or LAS/LAZ file, shape (n, 2) or (n, 3)."""
+
+def compare(a: Road, b: Road) -> dict[str, object]:
+    """b's surface against a's at a's grid nodes: max_difference, signed, at (u, v, x, y), rms, compared, only_in_a."""
 
 class ContactPoint:
     """A point of evaluation: its own options and x/y search history.

@@ -30,7 +30,7 @@ impl Ranges {
 }
 
 /// A range given as `A:B`.
-fn parse_range(text: Option<&str>, what: &str) -> Result<Range, String> {
+pub fn parse_range(text: Option<&str>, what: &str) -> Result<Range, String> {
     let Some(text) = text else { return Ok(None) };
     let bad = || format!("--{what} '{text}': expected FROM:TO in metres");
     let (a, b) = text.split_once(':').ok_or_else(bad)?;

@@ -9,6 +9,13 @@
 //! opencrg roughness ROAD [--track V]... [--segment LENGTH] [--json] [--plot OUT.png]
 //! opencrg export ROAD OUT.obj|.stl|.ply|.glb|.png [--u A:B] [--v C:D] [--normal-map] [--raw]
 //! opencrg view ROAD OUT.html [--u A:B] [--v C:D] [--max-vertices N] [--raw]
+//! opencrg cut IN OUT --u A:B [--v C:D]          opencrg flip IN OUT
+//! opencrg append FIRST SECOND OUT                opencrg resample IN OUT [--u-inc DU] [--v-inc DV]
+//! opencrg filter IN OUT --gauss SIGMA | --median N | --limit ZMIN:ZMAX | --fill-nan
+//! opencrg slope|banking IN OUT --extract|--apply|--remove
+//! opencrg generate OUT --refline LINE.csv --width W --u-inc DU --v-inc DV [--surface F]
+//! opencrg import CLOUD OUT [--refline LINE.csv] [--width W] --u-inc DU --v-inc DV
+//! opencrg compare A B [--tolerance T]
 //! ```
 //!
 //! Bad input gives one line on stderr and exit status 2; a road that fails its checks
@@ -16,8 +23,10 @@
 
 mod canvas;
 mod export;
+mod expr;
 mod geojson;
 mod info;
+mod make;
 mod render;
 mod roughness;
 mod view;
@@ -32,7 +41,11 @@ use std::process::ExitCode;
 use std::sync::Arc;
 
 #[derive(Parser)]
-#[command(name = "opencrg", version, about = "Look into, check, convert, evaluate and render OpenCRG road files")]
+#[command(
+    name = "opencrg",
+    version,
+    about = "Look into, check, convert, evaluate, render, export, cut, join, filter, generate and import OpenCRG road files"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -136,11 +149,13 @@ enum Command {
         #[arg(long)]
         plot: Option<PathBuf>,
     },
+    #[command(flatten)]
+    Make(make::MakeCommand),
 }
 
 /// The data formats, named as in files and the specification.
 #[derive(Clone, Copy, ValueEnum)]
-enum Format {
+pub(crate) enum Format {
     #[value(name = "KRBI")]
     Krbi,
     #[value(name = "KDBI")]
@@ -149,6 +164,17 @@ enum Format {
     Lrfi,
     #[value(name = "LDFI")]
     Ldfi,
+}
+
+impl From<Format> for DataFormat {
+    fn from(f: Format) -> DataFormat {
+        match f {
+            Format::Krbi => DataFormat::Krbi,
+            Format::Kdbi => DataFormat::Kdbi,
+            Format::Lrfi => DataFormat::Lrfi,
+            Format::Ldfi => DataFormat::Ldfi,
+        }
+    }
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -201,7 +227,7 @@ struct EvalOptions {
 /// An error for the user: one line.
 type Failure = String;
 
-fn load(path: &Path) -> Result<Road, Failure> {
+pub(crate) fn load(path: &Path) -> Result<Road, Failure> {
     let road = Road::load(path).map_err(|e| e.to_string())?;
     for w in road.warnings() {
         eprintln!("opencrg: warning: {w}");
@@ -336,13 +362,7 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
         }
         Command::Convert { input, output, format } => {
             let r = load(&input)?;
-            let f = match format {
-                Format::Krbi => DataFormat::Krbi,
-                Format::Kdbi => DataFormat::Kdbi,
-                Format::Lrfi => DataFormat::Lrfi,
-                Format::Ldfi => DataFormat::Ldfi,
-            };
-            opencrg::write(&r, &output, f).map_err(|e| e.to_string())?;
+            opencrg::write(&r, &output, format.into()).map_err(|e| e.to_string())?;
         }
         Command::Eval { road, xy, options } => {
             let mut cp = contact_point(&road, &options)?;
@@ -417,6 +437,7 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
                 roughness::plot(&found).write_png(&out)?;
             }
         }
+        Command::Make(command) => return make::run(command),
     }
     Ok(ExitCode::SUCCESS)
 }

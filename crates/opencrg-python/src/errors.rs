@@ -56,6 +56,8 @@ pub(crate) fn to_py(e: Error) -> PyErr {
             Err(e) => e,
         }),
         Error::Check(_) => CheckError::new_err(text),
-        Error::Setting(_) | Error::Eval(_) | Error::Analysis(_) | Error::Geo(_) => PyValueError::new_err(text),
+        Error::Setting(_) | Error::Eval(_) | Error::Analysis(_) | Error::Geo(_) | Error::Request(_) => {
+            PyValueError::new_err(text)
+        }
     }
 }

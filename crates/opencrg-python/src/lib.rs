@@ -9,6 +9,8 @@
 //! - `names`: the options' and modifiers' Python names, from the core's settings table;
 //! - `recipe`: how a road was made and changed, what a pickled road carries;
 //! - `roughness`: IRI and ISO 8608 of tracks and profiles;
+//! - `tools`: new roads from roads (cut, flip, append, resample, filter, slope, banking)
+//!   and from points (generate, import_points), point files, comparisons;
 //! - `errors`: the core's errors as Python exceptions.
 
 use pyo3::prelude::*;
@@ -22,6 +24,7 @@ mod names;
 mod recipe;
 mod road;
 mod roughness;
+mod tools;
 
 /// The module `opencrg`.
 #[pymodule(name = "opencrg")]
@@ -33,6 +36,10 @@ fn opencrg_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(contact::_contact_point_from_state, m)?)?;
     m.add_function(wrap_pyfunction!(roughness::iri, m)?)?;
     m.add_function(wrap_pyfunction!(roughness::psd, m)?)?;
+    m.add_function(wrap_pyfunction!(tools::generate, m)?)?;
+    m.add_function(wrap_pyfunction!(tools::import_points, m)?)?;
+    m.add_function(wrap_pyfunction!(tools::read_points, m)?)?;
+    m.add_function(wrap_pyfunction!(tools::compare, m)?)?;
     errors::register(m)?;
     names::register(m)?;
     Ok(())

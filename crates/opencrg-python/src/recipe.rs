@@ -24,6 +24,8 @@ enum Origin {
     File { path: PathBuf, len: u64, modified: u128 },
     /// Bytes, and the name they were given.
     Bytes { data: Arc<Vec<u8>>, name: String },
+    /// A road made by a tool: pickled as its bytes (KDBI), written when pickled.
+    Made(Arc<crg::Road>),
 }
 
 /// A change made to a road after it was read.
@@ -83,6 +85,12 @@ impl Recipe {
         Recipe { origin: Origin::Bytes { data, name: name.to_string() }, compat, steps: Vec::new() }
     }
 
+    /// A road a tool made.
+    pub(crate) fn made(road: Arc<crg::Road>) -> Self {
+        let compat = road.compat();
+        Recipe { origin: Origin::Made(road), compat, steps: Vec::new() }
+    }
+
     /// Notes a change.
     pub(crate) fn push(&mut self, step: Step) {
         self.steps.push(step);
@@ -98,6 +106,11 @@ impl Recipe {
             }
             Origin::Bytes { data, name } => {
                 (("bytes", PyBytes::new(py, data), name.as_str()).into_pyobject(py)?).into_any()
+            }
+            Origin::Made(road) => {
+                let mut data = Vec::new();
+                crg::writer::write_to(road, &mut data, crg::DataFormat::Kdbi)?;
+                (("bytes", PyBytes::new(py, &data), "<made>").into_pyobject(py)?).into_any()
             }
         };
         let steps = self
@@ -182,6 +195,7 @@ impl Recipe {
             let mut road = match &self.origin {
                 Origin::File { path, .. } => crg::Road::load_with(path, options)?,
                 Origin::Bytes { data, name } => crg::Road::from_bytes_with(data.to_vec(), name, options)?,
+                Origin::Made(road) => crg::Road::clone(road),
             };
             for step in &self.steps {
                 // A step that failed (a check) changes the road here as it changed it there.

@@ -63,7 +63,12 @@ impl Road {
     }
 
     pub(crate) fn from_core(road: crg::Road, recipe: Recipe) -> Self {
-        Road { inner: Arc::new(road), version: 0, grid: None, recipe }
+        Road::from_core_shared(Arc::new(road), recipe)
+    }
+
+    /// A road already shared (with its recipe, for one a tool made).
+    pub(crate) fn from_core_shared(road: Arc<crg::Road>, recipe: Recipe) -> Self {
+        Road { inner: road, version: 0, grid: None, recipe }
     }
 
     /// Takes `step` on the road and notes it in the recipe: contact points made before

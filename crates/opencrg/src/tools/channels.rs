@@ -61,16 +61,14 @@ pub fn change_channel(road: &Road, channel: LineChannel, action: ChannelAction) 
             d.slope = None;
             d.z_start = 0.0;
         }
-        (LineChannel::Banking, ChannelAction::Apply) => {
-            let bank = d.bank.take().unwrap_or_default();
-            for (iv, long) in d.z.chunks_exact_mut(nu).enumerate() {
-                for (z, b) in long.iter_mut().zip(&bank) {
-                    *z = (f64::from(*z) + b * d.v[iv]) as f32;
-                }
-            }
-        }
+        (LineChannel::Banking, ChannelAction::Apply) => fold_banking(&mut d),
         (LineChannel::Banking, ChannelAction::Remove) => d.bank = None,
         (_, ChannelAction::Extract) => {
+            if channel == LineChannel::Banking {
+                // The banking found acts across all the long sections.
+                fold_banking(&mut d);
+                d.bank_v = (d.v[0], d.v[d.nv() - 1]);
+            }
             let fits: Vec<(f64, f64)> = (0..nu).map(|iu| fit_across(&d.z, nu, &d.v, iu)).collect();
             if fits.iter().all(|f| f.0.is_nan()) {
                 return Err(Error::Request(format!("the grid holds no values to extract a {name} from")));
@@ -104,6 +102,19 @@ pub fn change_channel(road: &Road, channel: LineChannel, action: ChannelAction) 
         }
     }
     d.into_road(&format!("{name} {} by opencrg {}", past(action), env!("CARGO_PKG_VERSION")))
+}
+
+/// The banking folded into the grid and dropped from the line.
+fn fold_banking(d: &mut Draft) {
+    let nu = d.nu();
+    let mut z = std::mem::take(&mut d.z);
+    for (iv, long) in z.chunks_exact_mut(nu).enumerate() {
+        for (iu, z) in long.iter_mut().enumerate() {
+            *z = (f64::from(*z) + d.bank_term(iu, d.v[iv])) as f32;
+        }
+    }
+    d.z = z;
+    d.bank = None;
 }
 
 fn verb(a: ChannelAction) -> &'static str {

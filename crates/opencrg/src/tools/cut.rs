@@ -67,6 +67,8 @@ pub(crate) fn slice(d: Draft, us: std::ops::RangeInclusive<usize>, vs: std::ops:
         slope: d.slope.as_ref().map(|s| s[us.clone()].to_vec()),
         bank: d.bank.as_ref().map(|s| s[us.clone()].to_vec()),
         regular: d.regular,
+        // The same banking over the part kept.
+        bank_v: (d.bank_v.0.max(d.v[*vs.start()]), d.bank_v.1.min(d.v[*vs.end()])),
         v: d.v[vs].to_vec(),
         z: grid,
         moved: d.moved || moved,

@@ -34,6 +34,9 @@ pub(crate) struct Draft {
     pub v: Vec<f64>,
     /// Whether the long sections are evenly spaced and written by number.
     pub regular: bool,
+    /// The v range banking acts within (`LONG_SECTION_V_RIGHT`, `_LEFT`): beyond it, v
+    /// counts as its border (a file without them has banking act at v = 0 only).
+    pub bank_v: (f64, f64),
     /// Elevations relative to the reference line, long section by long section.
     pub z: Vec<f32>,
     /// The global origin, as it holds for a line starting at `origin_start`.
@@ -92,6 +95,7 @@ impl Draft {
             bank,
             v: g.v.clone(),
             regular: g.layout == VLayout::Indexed,
+            bank_v: (g.v_first, g.v_last),
             z: g.z.clone(),
             origin: road.origin,
             origin_start: (l.x_first, l.y_first),
@@ -136,6 +140,19 @@ impl Draft {
             }
         }
         z
+    }
+
+    /// The banking's share of the surface at cross section `i` and `v`.
+    pub fn bank_term(&self, i: usize, v: f64) -> f64 {
+        let (right, left) = self.bank_v;
+        let v = if v < right {
+            right
+        } else if v > left {
+            left
+        } else {
+            v
+        };
+        self.bank.as_ref().map_or(0.0, |b| b[i] * v)
     }
 
     /// The banking at every cross section (0 without banking).
@@ -185,8 +202,8 @@ impl Draft {
             start_z: Some(self.z_start),
             start_phi: Some(self.phi[0]),
             end_phi: Some(self.phi[nu - 1]),
-            v_right: Some(self.v[0]),
-            v_left: Some(self.v[nv - 1]),
+            v_right: Some(if self.regular { self.v[0] } else { self.bank_v.0 }),
+            v_left: Some(self.bank_v.1),
             v_increment: self.regular.then_some(v_inc),
             offset: if had_origin { [origin.x, origin.y, origin.z, origin.phi].map(Some) } else { [None; 4] },
             extra,

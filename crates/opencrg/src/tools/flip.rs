@@ -42,6 +42,7 @@ pub(crate) fn flipped(d: Draft) -> Draft {
         slope,
         bank,
         v: d.v.iter().rev().map(|v| -v).collect(),
+        bank_v: (-d.bank_v.1, -d.bank_v.0),
         z: grid,
         moved: true,
         ..d

@@ -6,6 +6,7 @@ use super::resample::positions;
 use crate::error::{Error, Result};
 use crate::header::Header;
 use crate::road::{LoadOptions, Road};
+use crate::settings::{m, NanMode, Settings};
 use std::path::Path;
 
 /// Points in the plane, with elevations where they have them.
@@ -115,8 +116,13 @@ pub(crate) fn along(line: &Points, layout: Layout) -> Result<Draft> {
         s
     });
     let start = (stops[0].x, stops[0].y);
+    // The default modifiers would move the road's start to the origin when applied; a
+    // road made from points stays where they are, its NaN handled as by default.
+    let mut header = Header::new(Path::new("generated.crg"));
+    header.modifiers = Settings::empty_modifiers();
+    header.modifiers.set_int(m::GRID_NAN_MODE, NanMode::KeepLast as i32)?;
     Ok(Draft {
-        header: Header::new(Path::new("generated.crg")),
+        header,
         u_first: 0.0,
         u_inc,
         start,
@@ -125,6 +131,7 @@ pub(crate) fn along(line: &Points, layout: Layout) -> Result<Draft> {
         slope,
         bank: None,
         regular: true,
+        bank_v: (v[0], v[v.len() - 1]),
         v,
         z: Vec::new(),
         origin: Default::default(),

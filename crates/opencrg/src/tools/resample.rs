@@ -85,25 +85,24 @@ pub(crate) fn onto(road: &Arc<Road>, du: f64, v: Vec<f64>, regular: bool, progre
         slope,
         bank,
         regular,
+        bank_v: (v[0], v[v.len() - 1]),
         moved: true,
         ..old
     };
     let frame = Arc::new(new.frame(v[0], v[v.len() - 1])?);
     let z_line = new.line_z();
-    let bank = new.bank.clone();
-    new.z = at_nodes(
+    let shape = &new;
+    let z = at_nodes(
         &frame,
         &v,
         || SurfaceProbe::new(road),
         |probe, node| match probe.at(node.x, node.y) {
-            Some((z, _, _)) => {
-                let b = bank.as_ref().map_or(0.0, |b| b[node.iu]);
-                (z - z_line[node.iu] - b * node.v) as f32
-            }
+            Some((z, _, _)) => (z - z_line[node.iu] - shape.bank_term(node.iu, node.v)) as f32,
             None => f32::NAN,
         },
         progress,
     );
+    new.z = z;
     new.v = v;
     Ok(new)
 }
