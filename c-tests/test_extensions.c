@@ -211,6 +211,51 @@ static void raw_data(const char *tmp)
     crgDataSetRelease(id);
 }
 
+/* A data set written in every format and read back: the same surface at the same
+ * places; bad requests refused with 0 and no file left behind. */
+static void written(int dataSet, const char *tmp)
+{
+    static const int formats[4] = {dCrgFormatLRFI, dCrgFormatLDFI, dCrgFormatKRBI, dCrgFormatKDBI};
+    static const double tolerance[4] = {2e-3, 1e-6, 1e-6, 1e-9};
+    char path[1024];
+    int k, i, cpA, cpB, back, bad;
+    double u0, u1, v0, v1, za, zb, xa, ya, xb, yb;
+    FILE *f;
+    crgDataSetGetURange(dataSet, &u0, &u1);
+    crgDataSetGetVRange(dataSet, &v0, &v1);
+    cpA = crgContactPointCreate(dataSet);
+    for (k = 0; k < 4; k++) {
+        snprintf(path, sizeof path, "%s/written_%d.crg", tmp, k);
+        CHECK(crgDataSetWrite(dataSet, path, formats[k]) == 1);
+        back = crgLoaderReadFile(path);
+        CHECK(back > 0);
+        cpB = crgContactPointCreate(back);
+        bad = 0;
+        for (i = 0; i < 200; i++) {
+            double u = u0 + (u1 - u0) * i / 199.0, v = v0 + (v1 - v0) * ((i * 37) % 200) / 199.0;
+            int okA = crgEvaluv2z(cpA, u, v, &za), okB = crgEvaluv2z(cpB, u, v, &zb);
+            crgEvaluv2xy(cpA, u, v, &xa, &ya);
+            crgEvaluv2xy(cpB, u, v, &xb, &yb);
+            bad += okA != okB || (okA && !(isnan(za) && isnan(zb)) && fabs(za - zb) > tolerance[k]);
+            bad += fabs(xa - xb) > 1e-6 || fabs(ya - yb) > 1e-6;
+        }
+        CHECK(bad == 0);
+        crgContactPointDelete(cpB);
+        crgDataSetRelease(back);
+        remove(path);
+    }
+    crgContactPointDelete(cpA);
+    snprintf(path, sizeof path, "%s/written_bad.crg", tmp);
+    CHECK(crgDataSetWrite(dataSet, path, 0) == 0);
+    CHECK(crgDataSetWrite(dataSet + 100, path, dCrgFormatKDBI) == 0);
+    CHECK(crgDataSetWrite(dataSet, NULL, dCrgFormatKDBI) == 0);
+    f = fopen(path, "r");
+    CHECK(f == NULL);
+    if (f) fclose(f);
+    snprintf(path, sizeof path, "%s/no such folder/written.crg", tmp);
+    CHECK(crgDataSetWrite(dataSet, path, dCrgFormatKDBI) == 0);
+}
+
 int main(int argc, char **argv)
 {
     const char *road = argc > 1 ? argv[1] : "examples/data/demo_road.crg";
@@ -239,6 +284,7 @@ int main(int argc, char **argv)
             normals(id, 1, mu, mv);
         }
     raw_data(tmp);
+    written(id, tmp);
     crgMemRelease();
     return check_summary("test_extensions");
 }

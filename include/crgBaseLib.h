@@ -332,6 +332,26 @@
  */
 #define dCrgOrientRev 1
 
+/*
+ Data format for `crgDataSetWrite`: LRFI (text, 10-character fields).
+ */
+#define dCrgFormatLRFI 1
+
+/*
+ Data format for `crgDataSetWrite`: LDFI (text, 20-character fields).
+ */
+#define dCrgFormatLDFI 2
+
+/*
+ Data format for `crgDataSetWrite`: KRBI (binary, 4-byte floats).
+ */
+#define dCrgFormatKRBI 3
+
+/*
+ Data format for `crgDataSetWrite`: KDBI (binary, 8-byte doubles).
+ */
+#define dCrgFormatKDBI 4
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -788,6 +808,23 @@ int crgDataSetGetGridZ(int dataSetId, float *z, int nU, int nV);
  Non-null pointers point to `nU` doubles each.
  */
 int crgDataSetGetRefLine(int dataSetId, double *u, double *x, double *y, double *phi, double *z, int nU);
+
+/*
+ ======================================================================================
+ WRITING: a data set saved as a CRG file (its data as it is now: modifiers applied
+ since loading are in the data).
+ ======================================================================================
+
+ Writes the data set to `filename` in `format` (`dCrgFormatLRFI`, `dCrgFormatLDFI`,
+ `dCrgFormatKRBI` or `dCrgFormatKDBI`): the header sections (comments, options,
+ modifiers, map data), the reference line and the grid. The file is written under a
+ temporary name and renamed: a failure leaves no partly written file. Returns 1 on
+ success, 0 (with a warning) for an unknown id or format, a null name or a write error.
+
+ # Safety
+ `filename` is null or a NUL-terminated string.
+ */
+int crgDataSetWrite(int dataSetId, const char *filename, int format);
 
 /*
  ======================================================================================

@@ -138,3 +138,12 @@ pub const dCrgGridNaNKeepLast: c_int = 2;
 pub const dCrgOrientFwd: c_int = 0;
 /// Orientation: reverse.
 pub const dCrgOrientRev: c_int = 1;
+
+/// Data format for `crgDataSetWrite`: LRFI (text, 10-character fields).
+pub const dCrgFormatLRFI: c_int = 1;
+/// Data format for `crgDataSetWrite`: LDFI (text, 20-character fields).
+pub const dCrgFormatLDFI: c_int = 2;
+/// Data format for `crgDataSetWrite`: KRBI (binary, 4-byte floats).
+pub const dCrgFormatKRBI: c_int = 3;
+/// Data format for `crgDataSetWrite`: KDBI (binary, 8-byte doubles).
+pub const dCrgFormatKDBI: c_int = 4;

@@ -1,14 +1,15 @@
 //! Extensions of the classic API (all named `crg...`, declared in their own section of
-//! `crgBaseLib.h`): batch evaluation, surface normals and raw data access.
+//! `crgBaseLib.h`): batch evaluation, surface normals, raw data access and writing.
 //!
 //! Pointers come from C: every one is checked for null and turned into a slice of the
 //! length the caller gives, through the helpers of `ptr`.
 #![allow(non_snake_case)] // the C API's parameter names
 
 use crate::api::{cp_call, road_read};
-use crate::ptr::{in_array as input, out, out_array as output};
-use opencrg::ContactPoint;
-use std::ffi::c_int;
+use crate::ptr::{in_array as input, in_str, out, out_array as output};
+use crate::{c_path, constants, msg};
+use opencrg::{ContactPoint, DataFormat};
+use std::ffi::{c_char, c_int};
 
 /// Runs a batch on a contact point: two inputs, `K` outputs of `n` values each.
 fn batch<const K: usize>(
@@ -279,4 +280,50 @@ pub unsafe extern "C" fn crgDataSetGetRefLine(
         }
         1
     })
+}
+
+/// ======================================================================================
+/// WRITING: a data set saved as a CRG file (its data as it is now: modifiers applied
+/// since loading are in the data).
+/// ======================================================================================
+///
+/// Writes the data set to `filename` in `format` (`dCrgFormatLRFI`, `dCrgFormatLDFI`,
+/// `dCrgFormatKRBI` or `dCrgFormatKDBI`): the header sections (comments, options,
+/// modifiers, map data), the reference line and the grid. The file is written under a
+/// temporary name and renamed: a failure leaves no partly written file. Returns 1 on
+/// success, 0 (with a warning) for an unknown id or format, a null name or a write error.
+///
+/// # Safety
+/// `filename` is null or a NUL-terminated string.
+#[no_mangle]
+pub unsafe extern "C" fn crgDataSetWrite(dataSetId: c_int, filename: *const c_char, format: c_int) -> c_int {
+    // SAFETY: the contract above.
+    let filename = unsafe { in_str(filename) };
+    let format = match format {
+        constants::dCrgFormatLRFI => DataFormat::Lrfi,
+        constants::dCrgFormatLDFI => DataFormat::Ldfi,
+        constants::dCrgFormatKRBI => DataFormat::Krbi,
+        constants::dCrgFormatKDBI => DataFormat::Kdbi,
+        other => {
+            msg::warn(&format!("crgDataSetWrite: unknown data format {other}"));
+            return 0;
+        }
+    };
+    let Some(filename) = filename else {
+        msg::warn("crgDataSetWrite: no file name given");
+        return 0;
+    };
+    let path = c_path::path_of(filename);
+    let mut failure = None;
+    let done = road_read("crgDataSetWrite", dataSetId, 0, |road| match opencrg::write(road, &path, format) {
+        Ok(()) => 1,
+        Err(e) => {
+            failure = Some(e.to_string());
+            0
+        }
+    });
+    if let Some(e) = failure {
+        msg::warn(&format!("crgDataSetWrite: {e}"));
+    }
+    done
 }
