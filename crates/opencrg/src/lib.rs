@@ -17,10 +17,10 @@
 // Comparisons like `!(x > 0.0)` are meant to reject NaN as well; they stay.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-// The layers, each using only those before it (checked by tests/layers.rs):
+// The layers, each using only those before it (checked by tests/architecture.rs):
 // `base` (errors, settings, profiles, memory), `model` (the road as data), `read` and
 // `write` (files to model and back, beside each other), `query` (evaluation, search,
-// contact points, modifiers, checks), and `synth` on top.
+// contact points, modifiers, checks), `geo`, `analysis`, `export`, `synth`, and `tools` on top.
 mod base {
     pub(crate) mod compat;
     pub(crate) mod error;

@@ -49,7 +49,7 @@ pub struct Layout {
 pub type Surface<'a> = &'a (dyn Fn(f64, f64) -> f64 + Sync);
 
 /// A road whose reference line passes through `line`'s points in order along a smooth
-/// curve (a natural cubic spline over the chord length: heading and curvature are
+/// curve (a cubic spline over the chord length: heading and curvature are
 /// continuous), its cross sections exactly `u_inc` apart along it. With elevations,
 /// the line climbs through them (a slope channel). The grid is `surface` (flat without).
 pub fn generate(line: &Points, layout: Layout, surface: Option<Surface>) -> Result<Road> {

@@ -1,5 +1,5 @@
 //! Lines in the plane for making reference lines: a smooth curve through points (a
-//! natural cubic spline over the chord length, continuous in heading and curvature)
+//! cubic spline over the chord length, continuous in heading and curvature)
 //! and the walk along a polyline that puts points exactly one step apart, as a
 //! reference line's heading channel places its cross sections.
 
@@ -48,7 +48,9 @@ pub(crate) fn chord_walk(x: &[f64], y: &[f64], t: &[f64], step: f64) -> Vec<Stop
     out
 }
 
-/// A natural cubic spline through `(t[i], f[i])` (t increasing).
+/// A cubic spline through `(t[i], f[i])` (t increasing), with parabolic run-out at both
+/// ends (the first and last pieces keep the curvature of their neighbours, so that a
+/// curve that bends at its ends is followed there too).
 pub(crate) struct Spline {
     t: Vec<f64>,
     f: Vec<f64>,
@@ -62,20 +64,29 @@ impl Spline {
         let n = t.len();
         let mut m = vec![0.0; n];
         if n > 2 {
-            // The tridiagonal system for the inner second derivatives (Thomas algorithm).
+            // The tridiagonal system for the inner second derivatives (Thomas algorithm),
+            // m[0] = m[1] and m[n-1] = m[n-2] folded into its first and last rows.
             let mut c = vec![0.0; n];
             let mut d = vec![0.0; n];
             for i in 1..n - 1 {
                 let h0 = t[i] - t[i - 1];
                 let h1 = t[i + 1] - t[i];
                 let rhs = 6.0 * ((f[i + 1] - f[i]) / h1 - (f[i] - f[i - 1]) / h0);
-                let diag = 2.0 * (h0 + h1) - h0 * c[i - 1];
+                let mut diag = 2.0 * (h0 + h1) - h0 * c[i - 1];
+                if i == 1 {
+                    diag += h0;
+                }
+                if i == n - 2 {
+                    diag += h1;
+                }
                 c[i] = h1 / diag;
                 d[i] = (rhs - h0 * d[i - 1]) / diag;
             }
             for i in (1..n - 1).rev() {
                 m[i] = d[i] - c[i] * m[i + 1];
             }
+            m[0] = m[1];
+            m[n - 1] = m[n - 2];
         }
         Spline { t: t.to_vec(), f: f.to_vec(), m }
     }
