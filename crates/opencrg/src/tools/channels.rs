@@ -7,7 +7,7 @@
 //! gradient for the banking) and moves it to the line. Both keep the surface; removing
 //! drops the channel and flattens the surface by it.
 
-use super::draft::Draft;
+use super::draft::{slopes_for, Draft};
 use crate::error::{Error, Result};
 use crate::road::Road;
 
@@ -88,10 +88,7 @@ pub fn change_channel(road: &Road, channel: LineChannel, action: ChannelAction) 
             match channel {
                 LineChannel::Slope => {
                     line.iter_mut().zip(&fits).for_each(|(l, f)| *l += f.0);
-                    let mut s: Vec<f64> =
-                        (0..nu).map(|i| if i == 0 { 0.0 } else { (line[i] - line[i - 1]) / d.u_inc }).collect();
-                    s[0] = s.get(1).copied().unwrap_or(0.0);
-                    d.slope = Some(s);
+                    d.slope = Some(slopes_for(&line, d.u_inc));
                     d.z_start = line[0];
                 }
                 LineChannel::Banking => {

@@ -27,12 +27,12 @@ pub struct Comparison {
 /// them (the second found by its own x/y search).
 pub fn compare(first: &Arc<Road>, second: &Arc<Road>, progress: Progress) -> Comparison {
     let v = first.grid().v.clone();
-    let cp_first = || (crate::ContactPoint::new(first.clone()), SurfaceProbe::new(second));
+    let probes = || (crate::ContactPoint::new(first.clone()), SurfaceProbe::new(second));
     // Each node's difference; +inf where only the first has a value, NaN where it has none.
     let diff = at_nodes(
         first,
         &v,
-        cp_first,
+        probes,
         |(a, b), node| {
             let Ok(za) = a.uv_to_z(node.u, node.v) else { return f32::NAN };
             if za.is_nan() {

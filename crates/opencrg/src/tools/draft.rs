@@ -49,6 +49,28 @@ pub(crate) struct Draft {
     pub load: LoadOptions,
 }
 
+/// The heading channel that puts a reference line's cross sections at `points` (one
+/// increment apart): each value the direction of the step that ends there, kept
+/// continuous (no jumps of a full turn); the first the same as the second.
+pub(crate) fn headings_through(points: &[(f64, f64)]) -> Vec<f64> {
+    let mut phi = vec![0.0; points.len()];
+    for j in 1..points.len() {
+        let p = (points[j].1 - points[j - 1].1).atan2(points[j].0 - points[j - 1].0);
+        phi[j] =
+            if j == 1 { p } else { p - ((p - phi[j - 1]) / std::f64::consts::TAU).round() * std::f64::consts::TAU };
+    }
+    phi[0] = phi.get(1).copied().unwrap_or(0.0);
+    phi
+}
+
+/// The slope channel that gives the reference line the elevations `z` at cross sections
+/// `inc` apart (the first value, never used, the same as the second).
+pub(crate) fn slopes_for(z: &[f64], inc: f64) -> Vec<f64> {
+    let mut s: Vec<f64> = (0..z.len()).map(|i| if i == 0 { 0.0 } else { (z[i] - z[i - 1]) / inc }).collect();
+    s[0] = s.get(1).copied().unwrap_or(0.0);
+    s
+}
+
 /// The `$ROAD_CRG` keywords that state where the ends of the line lie on the earth.
 fn is_end_position(key: &str) -> bool {
     let k = key.to_ascii_uppercase();
@@ -64,23 +86,18 @@ impl Draft {
         let g = &road.grid;
         let n = l.n;
         let blended_xy = l.defined.x_end && l.defined.y_end && l.phi.is_some();
-        let phi: Vec<f64> =
-            (0..n)
-                .map(|i| {
-                    if blended_xy && i > 0 {
-                        (l.y[i] - l.y[i - 1]).atan2(l.x[i] - l.x[i - 1])
-                    } else {
-                        l.heading_at(i)
-                    }
-                })
-                .collect();
+        // A line blended between both ends is taken as the points it went through.
+        let phi = if blended_xy {
+            let points: Vec<(f64, f64)> = l.x.iter().copied().zip(l.y.iter().copied()).collect();
+            let mut phi = headings_through(&points);
+            phi[0] = l.phi_first;
+            phi
+        } else {
+            (0..n).map(|i| l.heading_at(i)).collect()
+        };
         let slope = match (&l.slope, &l.z) {
             (Some(s), _) if !l.defined.z_end => Some(s.clone()),
-            (_, Some(z)) => {
-                let mut s: Vec<f64> = (0..n).map(|i| if i == 0 { 0.0 } else { (z[i] - z[i - 1]) / l.u_inc }).collect();
-                s[0] = s.get(1).copied().unwrap_or(0.0);
-                Some(s)
-            }
+            (_, Some(z)) => Some(slopes_for(z, l.u_inc)),
             _ => None,
         };
         let bank = l.has_bank.then(|| (0..n).map(|i| l.bank.as_ref().map_or(l.bank_first, |b| b[i])).collect());

@@ -1,6 +1,6 @@
 //! New roads along a line through points.
 
-use super::draft::Draft;
+use super::draft::{headings_through, slopes_for, Draft};
 use super::path::{chord_walk, Curve};
 use super::resample::positions;
 use crate::error::{Error, Result};
@@ -102,19 +102,9 @@ pub(crate) fn along(line: &Points, layout: Layout) -> Result<Draft> {
             curve.length
         )));
     }
-    let n = stops.len();
-    let mut phi = vec![0.0; n];
-    for j in 1..n {
-        let p = (stops[j].y - stops[j - 1].y).atan2(stops[j].x - stops[j - 1].x);
-        phi[j] = p - ((p - phi[j - 1]) / std::f64::consts::TAU).round() * std::f64::consts::TAU * f64::from(j > 1);
-    }
-    phi[0] = phi[1];
+    let phi = headings_through(&stops.iter().map(|s| (s.x, s.y)).collect::<Vec<_>>());
     let z: Option<Vec<f64>> = line.z.as_ref().map(|_| stops.iter().filter_map(|s| curve.z_at(s.t)).collect());
-    let slope = z.as_ref().map(|z| {
-        let mut s: Vec<f64> = (0..n).map(|j| if j == 0 { 0.0 } else { (z[j] - z[j - 1]) / u_inc }).collect();
-        s[0] = s[1];
-        s
-    });
+    let slope = z.as_ref().map(|z| slopes_for(z, u_inc));
     let start = (stops[0].x, stops[0].y);
     // The default modifiers would move the road's start to the origin when applied; a
     // road made from points stays where they are, its NaN handled as by default.

@@ -1,6 +1,6 @@
 //! The surface on a new grid, each node evaluated by the library.
 
-use super::draft::Draft;
+use super::draft::{headings_through, slopes_for, Draft};
 use super::nodes::{at_nodes, Progress, SurfaceProbe};
 use super::path::chord_walk;
 use crate::error::{Error, Result};
@@ -52,16 +52,7 @@ pub(crate) fn onto(road: &Arc<Road>, du: f64, v: Vec<f64>, regular: bool, progre
             line.u_last - line.u_first
         )));
     }
-    let n = stops.len();
-    let mut phi: Vec<f64> = (0..n)
-        .map(|j| if j == 0 { 0.0 } else { (stops[j].y - stops[j - 1].y).atan2(stops[j].x - stops[j - 1].x) })
-        .collect();
-    phi[0] = phi[1];
-    // Headings as continuous as the old ones (no jumps of a full turn).
-    for j in 1..n {
-        let turn = ((phi[j] - phi[j - 1]) / std::f64::consts::TAU).round();
-        phi[j] -= turn * std::f64::consts::TAU;
-    }
+    let phi = headings_through(&stops.iter().map(|s| (s.x, s.y)).collect::<Vec<_>>());
     let old_z = old.line_z();
     let lerp = |values: &dyn Fn(usize) -> f64, u: f64| {
         let f = ((u - old.u_first) / old.u_inc).clamp(0.0, (old.nu() - 1) as f64);
@@ -70,11 +61,7 @@ pub(crate) fn onto(road: &Arc<Road>, du: f64, v: Vec<f64>, regular: bool, progre
         values(i) * (1.0 - w) + values(i + 1) * w
     };
     let line_z: Vec<f64> = stops.iter().map(|s| lerp(&|i| old_z[i], s.t)).collect();
-    let slope = old.slope.as_ref().map(|_| {
-        let mut s: Vec<f64> = (0..n).map(|j| if j == 0 { 0.0 } else { (line_z[j] - line_z[j - 1]) / du }).collect();
-        s[0] = s[1];
-        s
-    });
+    let slope = old.slope.as_ref().map(|_| slopes_for(&line_z, du));
     let bank = old.bank.as_ref().map(|b| stops.iter().map(|s| lerp(&|i| b[i], s.t)).collect());
     let mut new = Draft {
         u_first: old.u_first,
