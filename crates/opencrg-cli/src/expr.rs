@@ -68,19 +68,19 @@ impl Parser<'_> {
     }
 
     fn sum(&mut self) -> Result<Expr, String> {
-        let mut e = self.product()?;
-        while let Some(op @ (b'+' | b'-')) = self.peek() {
-            self.at += 1;
-            e = Expr::Binary(op as char, Box::new(e), Box::new(self.product()?));
-        }
-        Ok(e)
+        self.chain(b"+-", Self::product)
     }
 
     fn product(&mut self) -> Result<Expr, String> {
-        let mut e = self.unary()?;
-        while let Some(op @ (b'*' | b'/')) = self.peek() {
+        self.chain(b"*/", Self::unary)
+    }
+
+    /// Operands from `operand` joined left to right by the operators `ops`.
+    fn chain(&mut self, ops: &[u8], operand: fn(&mut Self) -> Result<Expr, String>) -> Result<Expr, String> {
+        let mut e = operand(self)?;
+        while let Some(op) = self.peek().filter(|c| ops.contains(c)) {
             self.at += 1;
-            e = Expr::Binary(op as char, Box::new(e), Box::new(self.unary()?));
+            e = Expr::Binary(op as char, Box::new(e), Box::new(operand(self)?));
         }
         Ok(e)
     }

@@ -86,27 +86,9 @@ pub enum MakeCommand {
         format: OutputFormat,
     },
     /// Move the slope between the reference line and the grid, or remove it.
-    Slope {
-        /// The road file to read.
-        input: PathBuf,
-        /// The file to write.
-        output: PathBuf,
-        #[command(flatten)]
-        action: Action,
-        #[command(flatten)]
-        format: OutputFormat,
-    },
+    Slope(ChannelArgs),
     /// Move the banking between the reference line and the grid, or remove it.
-    Banking {
-        /// The road file to read.
-        input: PathBuf,
-        /// The file to write.
-        output: PathBuf,
-        #[command(flatten)]
-        action: Action,
-        #[command(flatten)]
-        format: OutputFormat,
-    },
+    Banking(ChannelArgs),
     /// A road along a smooth line through the x,y points of a CSV (a z column gives the slope).
     Generate {
         /// The file to write.
@@ -182,6 +164,19 @@ pub struct GridArgs {
     v_inc: f64,
 }
 
+/// The arguments of `slope` and `banking`.
+#[derive(Args)]
+pub struct ChannelArgs {
+    /// The road file to read.
+    input: PathBuf,
+    /// The file to write.
+    output: PathBuf,
+    #[command(flatten)]
+    action: Action,
+    #[command(flatten)]
+    format: OutputFormat,
+}
+
 /// What to do with a reference line channel.
 #[derive(Args)]
 #[group(required = true, multiple = false)]
@@ -228,6 +223,25 @@ fn save(road: &Road, out: &Path, format: DataFormat) -> Result<(), String> {
     Ok(())
 }
 
+/// Reads `input`, makes a road from it with `make`, and writes that to `output` (in the
+/// input's format unless `format` names another).
+fn remake(
+    input: &Path,
+    output: &Path,
+    format: &OutputFormat,
+    make: impl FnOnce(&Arc<Road>) -> opencrg::Result<Road>,
+) -> Result<(), String> {
+    let road = Arc::new(load(input)?);
+    let made = make(&road).map_err(named(input))?;
+    save(&made, output, data_format(format.format, road.format()))
+}
+
+/// `slope` or `banking`.
+fn channel(a: ChannelArgs, which: LineChannel) -> Result<(), String> {
+    let action = a.action.which();
+    remake(&a.input, &a.output, &a.format, |road| tools::change_channel(road, which, action))
+}
+
 /// A progress bar on a terminal (hidden elsewhere) for long work.
 fn progress_bar() -> indicatif::ProgressBar {
     let bar = indicatif::ProgressBar::new(0);
@@ -247,17 +261,11 @@ fn named(path: &Path) -> impl Fn(opencrg::Error) -> String + '_ {
 pub fn run(command: MakeCommand) -> Result<std::process::ExitCode, String> {
     match command {
         MakeCommand::Cut { input, output, u, v, format } => {
-            let road = load(&input)?;
             let u = parse_range(Some(&u), "u")?.ok_or("--u: expected FROM:TO")?;
             let v = parse_range(v.as_deref(), "v")?;
-            let made = tools::cut(&road, u, v).map_err(named(&input))?;
-            save(&made, &output, data_format(format.format, road.format()))?;
+            remake(&input, &output, &format, |road| tools::cut(road, u, v))?;
         }
-        MakeCommand::Flip { input, output, format } => {
-            let road = load(&input)?;
-            let made = tools::flip(&road).map_err(named(&input))?;
-            save(&made, &output, data_format(format.format, road.format()))?;
-        }
+        MakeCommand::Flip { input, output, format } => remake(&input, &output, &format, |road| tools::flip(road))?,
         MakeCommand::Append { first, second, output, format } => {
             let a = load(&first)?;
             let b = Arc::new(load(&second)?);
@@ -265,12 +273,9 @@ pub fn run(command: MakeCommand) -> Result<std::process::ExitCode, String> {
             save(&made, &output, data_format(format.format, a.format()))?;
         }
         MakeCommand::Resample { input, output, u_inc, v_inc, format } => {
-            let road = Arc::new(load(&input)?);
-            let made = tools::resample(&road, u_inc, v_inc).map_err(named(&input))?;
-            save(&made, &output, data_format(format.format, road.format()))?;
+            remake(&input, &output, &format, |road| tools::resample(road, u_inc, v_inc))?;
         }
         MakeCommand::Filter { input, output, gauss, median, limit, fill_nan, format } => {
-            let road = load(&input)?;
             let filter = match (gauss, median, limit, fill_nan) {
                 (Some(s), ..) => Filter::Gauss(s),
                 (_, Some(n), ..) => Filter::Median(n),
@@ -280,19 +285,10 @@ pub fn run(command: MakeCommand) -> Result<std::process::ExitCode, String> {
                 }
                 _ => Filter::FillNan,
             };
-            let made = tools::filter(&road, filter).map_err(named(&input))?;
-            save(&made, &output, data_format(format.format, road.format()))?;
+            remake(&input, &output, &format, |road| tools::filter(road, filter))?;
         }
-        MakeCommand::Slope { input, output, action, format } => {
-            let road = load(&input)?;
-            let made = tools::change_channel(&road, LineChannel::Slope, action.which()).map_err(named(&input))?;
-            save(&made, &output, data_format(format.format, road.format()))?;
-        }
-        MakeCommand::Banking { input, output, action, format } => {
-            let road = load(&input)?;
-            let made = tools::change_channel(&road, LineChannel::Banking, action.which()).map_err(named(&input))?;
-            save(&made, &output, data_format(format.format, road.format()))?;
-        }
+        MakeCommand::Slope(a) => channel(a, LineChannel::Slope)?,
+        MakeCommand::Banking(a) => channel(a, LineChannel::Banking)?,
         MakeCommand::Generate { output, refline, grid, width, surface, format } => {
             let line = tools::read_points(&refline).map_err(|e| e.to_string())?;
             let layout = Layout { width, u_inc: grid.u_inc, v_inc: grid.v_inc };

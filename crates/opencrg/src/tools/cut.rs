@@ -9,7 +9,7 @@ use crate::road::Road;
 /// given): the grid nodes inside those ranges, with the same surface at the same x/y/z.
 /// A range must overlap the road by at least two nodes in each direction.
 pub fn cut(road: &Road, u: (f64, f64), v: Option<(f64, f64)>) -> Result<Road> {
-    let d = Draft::of(road);
+    let d = Draft::line_of(road);
     let (u_first, u_last) = road.u_range();
     let (v_right, v_left) = road.v_range();
     let (a, b) = nodes_within(u, |i| d.u_first + i as f64 * d.u_inc, d.nu())
@@ -26,7 +26,7 @@ pub fn cut(road: &Road, u: (f64, f64), v: Option<(f64, f64)>) -> Result<Road> {
         d.v[c],
         d.v[e]
     );
-    slice(d, a..=b, c..=e).into_road(&what)
+    slice(d, road.grid().values(), a..=b, c..=e).into_road(&what)
 }
 
 /// The first and last of `n` nodes (positions `at(i)`, increasing) within `range`, when
@@ -47,16 +47,16 @@ fn outside(axis: &str, asked: (f64, f64), road: (f64, f64)) -> Error {
     ))
 }
 
-/// The draft's cross sections `us` and long sections `vs`, the line starting at the first
-/// of them where it was.
-pub(crate) fn slice(d: Draft, us: std::ops::RangeInclusive<usize>, vs: std::ops::RangeInclusive<usize>) -> Draft {
+/// The draft's cross sections `us` and long sections `vs` of `grid` (its elevations), the
+/// line starting at the first of them where it was.
+fn slice(d: Draft, grid: &[f32], us: std::ops::RangeInclusive<usize>, vs: std::ops::RangeInclusive<usize>) -> Draft {
     let (x, y) = d.line_xy();
     let z = d.line_z();
     let (a, b) = (*us.start(), *us.end());
     let nu = d.nu();
-    let mut grid = Vec::with_capacity((b - a + 1) * vs.clone().count());
+    let mut part = Vec::with_capacity((b - a + 1) * vs.clone().count());
     for iv in vs.clone() {
-        grid.extend_from_slice(&d.z[iv * nu + a..=iv * nu + b]);
+        part.extend_from_slice(&grid[iv * nu + a..=iv * nu + b]);
     }
     let moved = a != 0 || b != nu - 1;
     Draft {
@@ -70,7 +70,7 @@ pub(crate) fn slice(d: Draft, us: std::ops::RangeInclusive<usize>, vs: std::ops:
         // The same banking over the part kept.
         bank_v: (d.bank_v.0.max(d.v[*vs.start()]), d.bank_v.1.min(d.v[*vs.end()])),
         v: d.v[vs].to_vec(),
-        z: grid,
+        z: part,
         moved: d.moved || moved,
         ..d
     }

@@ -82,6 +82,12 @@ fn is_end_position(key: &str) -> bool {
 impl Draft {
     /// The road's data as arrays (the road is not changed).
     pub fn of(road: &Road) -> Draft {
+        Draft { z: road.grid.z.clone(), ..Draft::line_of(road) }
+    }
+
+    /// The road's data as arrays but its grid (`z` empty), for operations that make a
+    /// new grid from the road's.
+    pub fn line_of(road: &Road) -> Draft {
         let l = &road.line;
         let g = &road.grid;
         let n = l.n;
@@ -113,7 +119,7 @@ impl Draft {
             v: g.v.clone(),
             regular: g.layout == VLayout::Indexed,
             bank_v: (g.v_first, g.v_last),
-            z: g.z.clone(),
+            z: Vec::new(),
             origin: road.origin,
             origin_start: (l.x_first, l.y_first),
             moved: false,

@@ -10,11 +10,11 @@ use std::f64::consts::PI;
 /// surface stays at the same place. u starts where the road's started.
 pub fn flip(road: &Road) -> Result<Road> {
     let what = format!("flipped by opencrg {}: driven the other way", env!("CARGO_PKG_VERSION"));
-    flipped(Draft::of(road)).into_road(&what)
+    flipped(Draft::line_of(road), road.grid().values()).into_road(&what)
 }
 
-/// The draft driven the other way.
-pub(crate) fn flipped(d: Draft) -> Draft {
+/// The draft, whose elevations are `grid`, driven the other way.
+fn flipped(d: Draft, grid: &[f32]) -> Draft {
     let n = d.nu();
     let (x, y) = d.line_xy();
     let z = d.line_z();
@@ -31,9 +31,9 @@ pub(crate) fn flipped(d: Draft) -> Draft {
     });
     let bank = d.bank.as_ref().map(|b| b.iter().rev().map(|b| -b).collect());
     let nv = d.nv();
-    let mut grid = Vec::with_capacity(d.z.len());
+    let mut turned = Vec::with_capacity(grid.len());
     for iv in (0..nv).rev() {
-        grid.extend(d.z[iv * n..(iv + 1) * n].iter().rev());
+        turned.extend(grid[iv * n..(iv + 1) * n].iter().rev());
     }
     Draft {
         start: (x[n - 1], y[n - 1]),
@@ -43,7 +43,7 @@ pub(crate) fn flipped(d: Draft) -> Draft {
         bank,
         v: d.v.iter().rev().map(|v| -v).collect(),
         bank_v: (-d.bank_v.1, -d.bank_v.0),
-        z: grid,
+        z: turned,
         moved: true,
         ..d
     }

@@ -42,7 +42,7 @@ pub(crate) fn onto(road: &Arc<Road>, du: f64, v: Vec<f64>, regular: bool, progre
     if !(du > 0.0 && du.is_finite()) {
         return Err(Error::Request(format!("u increment {du} must be a positive number")));
     }
-    let old = Draft::of(road);
+    let old = Draft::line_of(road);
     let line = road.reference_line();
     let u_old: Vec<f64> = (0..line.n).map(|i| line.u_at(i)).collect();
     let stops = chord_walk(&line.x, &line.y, &u_old, du);
