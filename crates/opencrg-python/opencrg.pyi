@@ -38,6 +38,11 @@ class FormatError(CrgError, ValueError):
 class CheckError(CrgError):
     """A road refused by `Road.check()`."""
 
+class RequestError(CrgError, ValueError):
+    """A request refused before any work: a parameter out of range, a size beyond the memory limit, a setting or option the library does not take."""
+
+_Memory = Union[int, str]
+
 class ReferenceLine(NamedTuple):
     """The reference line at each cross section (read-only float64 arrays)."""
 
@@ -138,12 +143,13 @@ class Road:
 
     def to_mesh(
         self, u: tuple[float, float] | None = None, v: tuple[float, float] | None = None,
-        max_error: float | None = None, **options: _Setting
+        max_error: float | None = None, *, max_memory: _Memory | None = None, **options: _Setting
     ) -> dict[str, np.ndarray]:
         """The surface at the grid nodes, or simplified within max_error (m): positions, normals, texcoords, triangles, u, v (numpy)."""
     def write_mesh(
         self, path: str | PathLike[str], u: tuple[float, float] | None = None,
-        v: tuple[float, float] | None = None, max_error: float | None = None, **options: _Setting
+        v: tuple[float, float] | None = None, max_error: float | None = None, *,
+        max_memory: _Memory | None = None, **options: _Setting
     ) -> None:
         """Writes the surface mesh (simplified within max_error when given) as .obj, .stl, .ply or .glb."""
     def roughness(self, tracks: list[float] | None = None, segment: float = 100.0) -> list[dict[str, object]]:
@@ -152,9 +158,11 @@ class Road:
         """The part between u = (from, to) (and v): the grid nodes inside, the surface where it was."""
     def flip(self) -> Road:
         """The same road driven the other way (u reversed, v mirrored), the surface where it was."""
-    def append(self, other: Road) -> Road:
+    def append(self, other: Road, *, max_memory: _Memory | None = None) -> Road:
         """`other` continuing this road from its end point, heading and height."""
-    def resample(self, u_inc: float | None = None, v_inc: float | None = None) -> Road:
+    def resample(
+        self, u_inc: float | None = None, v_inc: float | None = None, *, max_memory: _Memory | None = None
+    ) -> Road:
         """The surface on a new grid, each node evaluated by the library."""
     def filter(
         self,
@@ -163,6 +171,7 @@ class Road:
         median: int | None = None,
         limit: tuple[float, float] | None = None,
         fill_nan: bool = False,
+        max_memory: _Memory | None = None,
     ) -> Road:
         """The grid filtered by exactly one of gauss (sigma, m), median (N x N), limit, fill_nan."""
     def slope(self, action: str) -> Road:
@@ -210,6 +219,8 @@ def generate(
     u_inc: float,
     v_inc: float,
     surface: Callable[[_Floats, _Floats], _ArrayLike] | Road | None = None,
+    *,
+    max_memory: _Memory | None = None,
 ) -> Road:
     """A road along a smooth line through the points (x, y[, z]); surface(u, v) on arrays of shape (nu, nv)."""
 
@@ -222,6 +233,7 @@ def import_points(
     width: float | None = None,
     max_edge: float | None = None,
     fill_nan: bool = False,
+    max_memory: _Memory | None = None,
 ) -> Road:
     """A road from a point cloud (n, 3), gridded along refline (or a line fitted through the cloud)."""
 

@@ -5,7 +5,7 @@
 use opencrg::mesh::{grid_mesh, Mesh};
 use opencrg::mesh_files::{write_mesh, write_whole, MeshFormat};
 use opencrg::simplify::{simplified_mesh, Stage};
-use opencrg::ContactPoint;
+use opencrg::{Budget, ContactPoint};
 use std::path::Path;
 
 /// The u and v ranges of `export` and `view`.
@@ -55,14 +55,14 @@ pub struct Request {
 }
 
 /// Writes the export `out` names by its extension.
-pub fn export(cp: &ContactPoint, out: &Path, request: &Request) -> Result<String, String> {
+pub fn export(cp: &ContactPoint, out: &Path, request: &Request, budget: &Budget) -> Result<String, String> {
     let &Request { u, v, normal_map, max_error } = request;
     let is_png = out.extension().and_then(|e| e.to_str()).is_some_and(|e| e.eq_ignore_ascii_case("png"));
     if is_png {
         if max_error.is_some() {
             return Err("--max-error: only for a mesh (.obj, .stl, .ply or .glb)".into());
         }
-        let mesh = grid_mesh(cp, u, v).map_err(|e| e.to_string())?;
+        let mesh = grid_mesh(cp, u, v, budget).map_err(|e| e.to_string())?;
         let (nu, nv) = (mesh.u.len(), mesh.v.len());
         if normal_map {
             normal_png(cp, &mesh, nu, nv, out)?;
@@ -77,21 +77,21 @@ pub fn export(cp: &ContactPoint, out: &Path, request: &Request) -> Result<String
     let format = MeshFormat::from_path(out)
         .ok_or_else(|| format!("{}: unknown export format; .obj, .stl, .ply, .glb or .png", out.display()))?;
     let mesh = match max_error {
-        Some(bound) => simplified(cp, u, v, bound)?,
-        None => grid_mesh(cp, u, v).map_err(|e| e.to_string())?,
+        Some(bound) => simplified(cp, u, v, bound, budget)?,
+        None => grid_mesh(cp, u, v, budget).map_err(|e| e.to_string())?,
     };
     write_mesh(&mesh, out, format).map_err(|e| e.to_string())?;
     Ok(format!("{}: {} vertices, {} triangles", out.display(), mesh.positions.len(), mesh.triangles.len()))
 }
 
 /// The simplified mesh, with a progress bar on a terminal.
-fn simplified(cp: &ContactPoint, u: Range, v: Range, bound: f64) -> Result<Mesh, String> {
+fn simplified(cp: &ContactPoint, u: Range, v: Range, bound: f64, budget: &Budget) -> Result<Mesh, String> {
     let bar = indicatif::ProgressBar::new(1000);
     bar.set_style(
         indicatif::ProgressStyle::with_template("{msg:10} {bar:40} {percent:>3} %")
             .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
     );
-    let mesh = simplified_mesh(cp, u, v, bound, &mut |stage| match stage {
+    let mesh = simplified_mesh(cp, u, v, bound, budget, &mut |stage| match stage {
         Stage::Sampling => bar.set_message("sampling"),
         Stage::Measuring(done) => {
             bar.set_message("measuring");

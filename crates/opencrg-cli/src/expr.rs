@@ -35,9 +35,27 @@ impl Expr {
     }
 }
 
+/// The longest formula taken, in bytes: its tree is at most half as deep, which
+/// evaluating and dropping it walk recursively.
+const MAX_LENGTH: usize = 10_000;
+/// The deepest the parser descends: each parenthesis or call takes two levels, each sign
+/// or power one.
+const MAX_NESTING: usize = 200;
+
+/// `text` as a message quotes it: its first 60 characters and an ellipsis when longer.
+pub fn abridged(text: &str) -> String {
+    match text.char_indices().nth(60) {
+        Some((end, _)) => format!("{}...", &text[..end]),
+        None => text.to_string(),
+    }
+}
+
 /// Parses `text`; the error says what was expected where.
 pub fn parse(text: &str) -> Result<Expr, String> {
-    let mut p = Parser { s: text.as_bytes(), at: 0 };
+    if text.len() > MAX_LENGTH {
+        return Err(format!("a formula of {} characters; at most {MAX_LENGTH} are taken", text.len()));
+    }
+    let mut p = Parser { s: text.as_bytes(), at: 0, nesting: 0 };
     let e = p.sum()?;
     p.blanks();
     if p.at < p.s.len() {
@@ -49,6 +67,8 @@ pub fn parse(text: &str) -> Result<Expr, String> {
 struct Parser<'a> {
     s: &'a [u8],
     at: usize,
+    /// How deep the parser has descended into nested parts.
+    nesting: usize,
 }
 
 impl Parser<'_> {
@@ -85,7 +105,22 @@ impl Parser<'_> {
         Ok(e)
     }
 
+    /// `part` one level deeper, refused beyond [`MAX_NESTING`].
+    fn nested(&mut self, part: fn(&mut Self) -> Result<Expr, String>) -> Result<Expr, String> {
+        if self.nesting >= MAX_NESTING {
+            return Err(format!("more than {MAX_NESTING} nested parts at character {}", self.at + 1));
+        }
+        self.nesting += 1;
+        let e = part(self);
+        self.nesting -= 1;
+        e
+    }
+
     fn unary(&mut self) -> Result<Expr, String> {
+        self.nested(Self::unary_here)
+    }
+
+    fn unary_here(&mut self) -> Result<Expr, String> {
         if self.peek() == Some(b'-') {
             self.at += 1;
             return Ok(Expr::Neg(Box::new(self.unary()?)));
@@ -102,7 +137,7 @@ impl Parser<'_> {
         match self.peek() {
             Some(b'(') => {
                 self.at += 1;
-                let e = self.sum()?;
+                let e = self.nested(Self::sum)?;
                 if self.peek() != Some(b')') {
                     return Err(self.expected("')'"));
                 }
@@ -149,7 +184,7 @@ impl Parser<'_> {
                     return Err(self.expected(&format!("'(' after {name}")));
                 }
                 self.at += 1;
-                let arg = self.sum()?;
+                let arg = self.nested(Self::sum)?;
                 if self.peek() != Some(b')') {
                     return Err(self.expected("')'"));
                 }
@@ -175,5 +210,16 @@ mod tests {
         assert!(parse("sin u").unwrap_err().contains("'(' after sin"));
         assert!(parse("w + 1").unwrap_err().contains("unknown name 'w'"));
         assert!(parse("(u").unwrap_err().contains("')'"));
+    }
+
+    #[test]
+    fn deep_or_long_formulas_are_refused_not_overflowing() {
+        let deep = format!("{}u{}", "(".repeat(3000), ")".repeat(3000));
+        assert!(parse(&deep).unwrap_err().contains("nested"));
+        assert!(parse(&format!("{}u", "-".repeat(5000))).unwrap_err().contains("nested"));
+        assert!(parse(&"u+".repeat(6000)).unwrap_err().contains("at most"));
+        let long = format!("u{}", "+u".repeat(4000));
+        assert_eq!(parse(&long).unwrap().at(1.0, 0.0), 4001.0);
+        assert!(parse(&format!("{}u{}", "(".repeat(90), ")".repeat(90))).is_ok());
     }
 }

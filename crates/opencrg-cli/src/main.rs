@@ -34,7 +34,7 @@ mod view;
 use clap::{Parser, Subcommand, ValueEnum};
 use opencrg::settings;
 
-use opencrg::{ContactPoint, Continuation, CpOption, DataFormat, Road};
+use opencrg::{Budget, ContactPoint, Continuation, CpOption, DataFormat, Road};
 use std::io::{BufRead, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -49,6 +49,10 @@ use std::sync::Arc;
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// The most memory one command may use, like 8G, 512M or 2GiB (default: half of
+    /// what the system has available); requests that would need more are refused.
+    #[arg(long, global = true, value_name = "BYTES", value_parser = opencrg::parse_bytes, allow_hyphen_values = true)]
+    max_memory: Option<u64>,
 }
 
 #[derive(Subcommand)]
@@ -92,7 +96,7 @@ enum Command {
         road: PathBuf,
         /// The PNG file to write.
         output: PathBuf,
-        /// Pixels on the longer side of the map.
+        /// Pixels on the longer side of the map (16 to 20000).
         #[arg(long, default_value_t = 1200)]
         size: usize,
         /// Draw a section instead: `u=12.5` across the road, `v=0.5` along it.
@@ -334,6 +338,11 @@ fn parse_profile(text: &str) -> Result<render::Section, Failure> {
 }
 
 fn run(cli: Cli) -> Result<ExitCode, Failure> {
+    let budget = match cli.max_memory {
+        Some(bytes) => Budget::with_bytes(bytes),
+        None => Budget::machine(),
+    }
+    .raised_with("--max-memory");
     match cli.command {
         Command::Info { road, json } => {
             let r = load(&road)?;
@@ -371,6 +380,21 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
         Command::Render { road, output, size, profile, options } => {
             let section = profile.as_deref().map(parse_profile).transpose()?;
             let mut cp = contact_point(&road, &options)?;
+            let ((u0, u1), (v0, v1)) = (cp.road().u_range(), cp.road().v_range());
+            let outside = match section {
+                Some(render::Section::AtU(u)) => (!(u0..=u1).contains(&u)).then_some(format!("u {u0} to {u1} m")),
+                Some(render::Section::AtV(v)) => (!(v0..=v1).contains(&v)).then_some(format!("v {v0} to {v1} m")),
+                None => None,
+            };
+            if let (Some(span), Some(text)) = (outside, &profile) {
+                return Err(format!("--profile {text}: outside the road, which spans {span}"));
+            }
+            if !(16..=render::MAX_SIZE).contains(&size) {
+                return Err(format!(
+                    "--size {size} px: the longer side of a picture takes 16 to {} px",
+                    render::MAX_SIZE
+                ));
+            }
             let picture = match section {
                 Some(s) => render::profile(&mut cp, s),
                 None => {
@@ -379,12 +403,12 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
                         indicatif::ProgressStyle::with_template("rendering {bar:40} {pos}/{len} rows")
                             .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
                     );
-                    let picture = render::top_view(&mut cp, size.clamp(16, 20_000), &|row| {
+                    let picture = render::top_view(&mut cp, size, &budget, &|row| {
                         bar.set_length(bar.length().unwrap_or(0).max(row));
                         bar.set_position(row);
                     });
                     bar.finish_and_clear();
-                    picture
+                    picture.map_err(|e| format!("{}: {e}", road.display()))?
                 }
             };
             picture.write_png(&output)?;
@@ -402,7 +426,7 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
                 }
                 geojson::write(&mut cp, &output)
             } else {
-                export::export(&cp, &output, &export::Request { u, v, normal_map, max_error })
+                export::export(&cp, &output, &export::Request { u, v, normal_map, max_error }, &budget)
             };
             eprintln!("{}", done.map_err(|e| format!("{}: {e}", road.display()))?);
         }
@@ -410,8 +434,8 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
             let (u, v) = ranges.parse()?;
             let cp = contact_point(&road, &options)?;
             let name = road.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-            let done =
-                view::view(&cp, &name, &output, u, v, max_vertices).map_err(|e| format!("{}: {e}", road.display()))?;
+            let done = view::view(&cp, &name, &output, u, v, max_vertices, &budget)
+                .map_err(|e| format!("{}: {e}", road.display()))?;
             eprintln!("{done}");
         }
         Command::Roughness { road, tracks, segment, json, plot } => {
@@ -437,18 +461,36 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
                 roughness::plot(&found).write_png(&out)?;
             }
         }
-        Command::Make(command) => return make::run(command),
+        Command::Make(command) => return make::run(command, &budget),
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// The command line, every value that looks like a negative number taken as one (so
+/// that `--u-inc -1` reaches the command's own checks), in every subcommand.
+fn parse_arguments() -> Cli {
+    use clap::{CommandFactory, FromArgMatches};
+    fn negatives(command: clap::Command) -> clap::Command {
+        command
+            .mut_args(|a| if a.get_action().takes_values() { a.allow_negative_numbers(true) } else { a })
+            .mut_subcommands(negatives)
+    }
+    let matches = negatives(Cli::command()).get_matches();
+    Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit())
 }
 
 fn main() -> ExitCode {
     // A bug must still end in one line, not a panic trace.
     std::panic::set_hook(Box::new(|info| {
-        let what = info.payload().downcast_ref::<&str>().copied().unwrap_or("unexpected state");
+        let payload = info.payload();
+        let what = payload
+            .downcast_ref::<&str>()
+            .copied()
+            .or_else(|| payload.downcast_ref::<String>().map(String::as_str))
+            .unwrap_or("unexpected state");
         eprintln!("opencrg: internal error: {what}");
     }));
-    let cli = Cli::parse();
+    let cli = parse_arguments();
     match std::panic::catch_unwind(|| run(cli)) {
         Ok(Ok(code)) => code,
         Ok(Err(message)) => {

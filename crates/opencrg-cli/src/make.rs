@@ -6,7 +6,7 @@ use crate::export::parse_range;
 use crate::{expr, load, Format};
 use clap::{ArgGroup, Args, Subcommand};
 use opencrg::tools::{self, ChannelAction, Filter, Import, Layout, LineChannel};
-use opencrg::{ContactPoint, DataFormat, Road};
+use opencrg::{Budget, ContactPoint, DataFormat, Road};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -75,7 +75,7 @@ pub enum MakeCommand {
         gauss: Option<f64>,
         /// The median of N x N nodes (N odd).
         #[arg(long, value_name = "N")]
-        median: Option<usize>,
+        median: Option<i64>,
         /// Grid values limited to ZMIN:ZMAX [m].
         #[arg(long, value_name = "ZMIN:ZMAX", allow_hyphen_values = true)]
         limit: Option<String>,
@@ -258,7 +258,7 @@ fn named(path: &Path) -> impl Fn(opencrg::Error) -> String + '_ {
 }
 
 /// Runs a command that makes or compares roads; the exit status.
-pub fn run(command: MakeCommand) -> Result<std::process::ExitCode, String> {
+pub fn run(command: MakeCommand, budget: &Budget) -> Result<std::process::ExitCode, String> {
     match command {
         MakeCommand::Cut { input, output, u, v, format } => {
             let u = parse_range(Some(&u), "u")?.ok_or("--u: expected FROM:TO")?;
@@ -269,23 +269,26 @@ pub fn run(command: MakeCommand) -> Result<std::process::ExitCode, String> {
         MakeCommand::Append { first, second, output, format } => {
             let a = load(&first)?;
             let b = Arc::new(load(&second)?);
-            let made = tools::append(&a, &b).map_err(|e| format!("{} + {}: {e}", first.display(), second.display()))?;
+            let made = tools::append(&a, &b, budget)
+                .map_err(|e| format!("{} + {}: {e}", first.display(), second.display()))?;
             save(&made, &output, data_format(format.format, a.format()))?;
         }
         MakeCommand::Resample { input, output, u_inc, v_inc, format } => {
-            remake(&input, &output, &format, |road| tools::resample(road, u_inc, v_inc))?;
+            remake(&input, &output, &format, |road| tools::resample(road, u_inc, v_inc, budget))?;
         }
         MakeCommand::Filter { input, output, gauss, median, limit, fill_nan, format } => {
             let filter = match (gauss, median, limit, fill_nan) {
                 (Some(s), ..) => Filter::Gauss(s),
-                (_, Some(n), ..) => Filter::Median(n),
+                (_, Some(n), ..) => Filter::Median(
+                    usize::try_from(n).map_err(|_| format!("--median {n}: the window takes an odd number of nodes"))?,
+                ),
                 (_, _, Some(text), _) => {
                     let (a, b) = parse_range(Some(&text), "limit")?.ok_or("--limit: expected ZMIN:ZMAX")?;
                     Filter::Limit(a, b)
                 }
                 _ => Filter::FillNan,
             };
-            remake(&input, &output, &format, |road| tools::filter(road, filter))?;
+            remake(&input, &output, &format, |road| tools::filter(road, filter, budget))?;
         }
         MakeCommand::Slope(a) => channel(a, LineChannel::Slope)?,
         MakeCommand::Banking(a) => channel(a, LineChannel::Banking)?,
@@ -293,15 +296,15 @@ pub fn run(command: MakeCommand) -> Result<std::process::ExitCode, String> {
             let line = tools::read_points(&refline).map_err(|e| e.to_string())?;
             let layout = Layout { width, u_inc: grid.u_inc, v_inc: grid.v_inc };
             let made = match surface.as_deref() {
-                None => tools::generate(&line, layout, None),
+                None => tools::generate(&line, layout, None, budget),
                 Some(text) if Path::new(text).is_file() => {
                     let other = ContactPoint::new(Arc::new(load(Path::new(text))?));
                     let f = move |u: f64, v: f64| other.uv_to_z(u, v).unwrap_or(f64::NAN);
-                    tools::generate(&line, layout, Some(&f))
+                    tools::generate(&line, layout, Some(&f), budget)
                 }
                 Some(text) => {
-                    let e = expr::parse(text).map_err(|m| format!("--surface '{text}': {m}"))?;
-                    tools::generate(&line, layout, Some(&|u, v| e.at(u, v)))
+                    let e = expr::parse(text).map_err(|m| format!("--surface '{}': {m}", expr::abridged(text)))?;
+                    tools::generate(&line, layout, Some(&|u, v| e.at(u, v)), budget)
                 }
             }
             .map_err(named(&refline))?;
@@ -314,11 +317,16 @@ pub fn run(command: MakeCommand) -> Result<std::process::ExitCode, String> {
             let refline = refline.map(|l| tools::read_points(&l).map_err(|e| e.to_string())).transpose()?;
             let how = Import { refline, width, u_inc: grid.u_inc, v_inc: grid.v_inc, max_edge, fill: fill_nan };
             let started = std::time::Instant::now();
-            let made = tools::import(&points, &how, &|stage, done, total| {
-                bar.set_message(stage.to_string());
-                bar.set_length(total);
-                bar.set_position(done);
-            });
+            let made = tools::import(
+                &points,
+                &how,
+                &|stage, done, total| {
+                    bar.set_message(stage.to_string());
+                    bar.set_length(total);
+                    bar.set_position(done);
+                },
+                budget,
+            );
             bar.finish_and_clear();
             let made = made.map_err(named(&cloud))?;
             let seconds = started.elapsed().as_secs_f64();
@@ -331,7 +339,7 @@ pub fn run(command: MakeCommand) -> Result<std::process::ExitCode, String> {
         }
         MakeCommand::Compare { a, b, tolerance, json } => {
             let (ra, rb) = (Arc::new(load(&a)?), Arc::new(load(&b)?));
-            let c = tools::compare(&ra, &rb, &|_, _, _| {});
+            let c = tools::compare(&ra, &rb, &|_, _, _| {}).map_err(named(&a))?;
             if json {
                 let value = serde_json::json!({
                     "compared": c.compared,

@@ -2,12 +2,17 @@
 //! colour bar and a scale bar; and sections along u or across v as line plots.
 
 use crate::canvas::{Canvas, Rgb, BLACK, NO_DATA};
-use opencrg::ContactPoint;
+use opencrg::{Budget, ContactPoint};
 
 /// Room right of the map for the colour bar and its labels, and below it for the scale bar.
 const BAR_ROOM: usize = 150;
 const SCALE_ROOM: usize = 44;
 const MARGIN: usize = 12;
+/// The memory a pixel of the top view takes while it is made (elevation, slope, colour,
+/// the encoded picture).
+const PIXEL_BYTES: f64 = 32.0;
+/// The longest side of a top view, in pixels.
+pub const MAX_SIZE: usize = 20_000;
 
 /// A few colours from deep blue through green to yellow, for low to high elevation.
 const COLOUR_STOPS: [Rgb; 6] =
@@ -51,7 +56,7 @@ fn label(v: f64) -> String {
 
 /// The top view of the road evaluated through `cp`: at most `size` pixels on the longer
 /// side of the map. `progress` is told each finished row.
-pub fn top_view(cp: &mut ContactPoint, size: usize, progress: &dyn Fn(u64)) -> Canvas {
+pub fn top_view(cp: &mut ContactPoint, size: usize, budget: &Budget, progress: &dyn Fn(u64)) -> Result<Canvas, String> {
     let road = cp.road().clone();
     let (u0, u1) = road.u_range();
     let (v0, v1) = road.v_range();
@@ -74,6 +79,9 @@ pub fn top_view(cp: &mut ContactPoint, size: usize, progress: &dyn Fn(u64)) -> C
     let px = extent / size.max(1) as f64; // metres per pixel
     let mw = (((xmax - xmin) / px).ceil() as usize).max(1);
     let mh = (((ymax - ymin) / px).ceil() as usize).max(1);
+    // Per pixel: its elevation, its slope for the shading, its colour, the PNG's bytes.
+    let request = format!("a top view of {mw} x {mh} px");
+    budget.admit(&request, mw as f64 * mh as f64, "pixels", PIXEL_BYTES).map_err(|e| e.to_string())?;
 
     // Elevation at every pixel centre inside the road (NaN: no data; None: off the road).
     let mut z: Vec<Option<f64>> = vec![None; mw * mh];
@@ -173,7 +181,7 @@ pub fn top_view(cp: &mut ContactPoint, size: usize, progress: &dyn Fn(u64)) -> C
     canvas.fill(sx, sy - 4, 1, 12, BLACK);
     canvas.fill(sx + bar.max(1) - 1, sy - 4, 1, 12, BLACK);
     canvas.text(sx, sy + 10, &format!("{length} m"), 1, BLACK);
-    canvas
+    Ok(canvas)
 }
 
 /// Which section a profile shows.

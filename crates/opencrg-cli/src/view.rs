@@ -6,7 +6,7 @@
 use crate::export::Range;
 use opencrg::mesh::grid_mesh_every;
 use opencrg::mesh_files::{write_mesh_to, write_whole, MeshFormat};
-use opencrg::ContactPoint;
+use opencrg::{Budget, ContactPoint};
 use std::io::Write;
 use std::path::Path;
 
@@ -44,11 +44,12 @@ pub fn view(
     u: Range,
     v: Range,
     max_vertices: usize,
+    budget: &Budget,
 ) -> Result<String, String> {
     let road = cp.road();
     let nodes = road.grid().nu.saturating_mul(road.grid().nv);
     let step = nodes.div_ceil(max_vertices.max(1)).max(1);
-    let mesh = grid_mesh_every(cp, u, v, step).map_err(|e| e.to_string())?;
+    let mesh = grid_mesh_every(cp, u, v, step, budget).map_err(|e| e.to_string())?;
     let mut glb = Vec::new();
     write_mesh_to(&mesh, &mut glb, MeshFormat::Glb).map_err(|e| e.to_string())?;
     // The reference line over the mesh's u range, at most 4000 points.

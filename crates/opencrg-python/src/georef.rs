@@ -54,7 +54,7 @@ impl Road {
     fn set_global_origin(&mut self, py: Python<'_>, origin: (f64, f64, f64, f64)) -> PyResult<()> {
         let (x, y, z, phi) = origin;
         if ![x, y, z, phi].iter().all(|v| v.is_finite()) {
-            return Err(pyo3::exceptions::PyValueError::new_err("the global origin must be finite"));
+            return Err(crate::errors::request_error("the global origin must be finite"));
         }
         self.change(py, Step::SetGlobalOrigin([x, y, z, phi]))
     }

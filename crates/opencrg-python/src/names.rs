@@ -5,7 +5,7 @@
 use ::opencrg::settings::{self, Accepts, Family, Kind, SettingInfo, Settings, Value, SETTINGS};
 use ::opencrg::settings::{BorderMode, NanMode};
 use ::opencrg::{Continuation, CurvMode};
-use pyo3::exceptions::{PyKeyError, PyTypeError, PyValueError};
+use pyo3::exceptions::{PyKeyError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -46,17 +46,18 @@ pub(crate) fn value_for(s: &SettingInfo, value: &Bound<'_, PyAny>) -> PyResult<O
             let v: i64 = value.extract().map_err(|_| PyTypeError::new_err(format!("{name} takes an integer")))?;
             let v = match s.accepts {
                 Accepts::Choice { max } if !(0..=i64::from(max)).contains(&v) => {
-                    return Err(PyValueError::new_err(format!("{name} = {v}: expected one of 0..{max}")));
+                    return Err(crate::errors::request_error(format!("{name} = {v}: expected one of 0..{max}")));
                 }
                 // A check is on or off; the table stores it as its identifier.
                 Accepts::Flag => match v {
                     0 => return Ok(None),
                     1 => i64::from(s.id),
-                    _ => return Err(PyValueError::new_err(format!("{name} = {v}: expected True or False"))),
+                    _ => return Err(crate::errors::request_error(format!("{name} = {v}: expected True or False"))),
                 },
                 _ => v,
             };
-            let v = i32::try_from(v).map_err(|_| PyValueError::new_err(format!("{name} = {v}: out of range")))?;
+            let v =
+                i32::try_from(v).map_err(|_| crate::errors::request_error(format!("{name} = {v}: out of range")))?;
             Ok(Some(Value::Int(v)))
         }
         Kind::Double => {

@@ -10,7 +10,6 @@
 use ::opencrg as crg;
 use ::opencrg::settings::Value;
 use ::opencrg::{Compat, LoadOptions};
-use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyTuple};
 use std::path::{Path, PathBuf};
@@ -133,13 +132,14 @@ impl Recipe {
 
     /// The recipe from what [`Recipe::to_py`] gave.
     pub(crate) fn from_py(state: &Bound<'_, PyAny>) -> PyResult<Self> {
-        let bad = |what: &str| PyValueError::new_err(format!("not a pickled opencrg.Road: {what}"));
+        let bad = |what: &str| crate::errors::request_error(format!("not a pickled opencrg.Road: {what}"));
         let (version, origin, compat, steps): (u32, Bound<'_, PyAny>, String, Vec<Bound<'_, PyAny>>) =
             state.extract().map_err(|_| bad("its state"))?;
         if version != 1 {
             return Err(bad(&format!("state version {version}")));
         }
-        let compat: Compat = compat.parse().map_err(|e: crg::UnknownCompat| PyValueError::new_err(e.to_string()))?;
+        let compat: Compat =
+            compat.parse().map_err(|e: crg::UnknownCompat| crate::errors::request_error(e.to_string()))?;
         let kind: String = origin.get_item(0)?.extract()?;
         let origin = match kind.as_str() {
             "file" => {
@@ -185,7 +185,7 @@ impl Recipe {
         let options = LoadOptions { compat: self.compat, ..LoadOptions::default() };
         if let Origin::File { path, len, modified } = &self.origin {
             if stamp(path)? != (*len, *modified) {
-                return Err(PyValueError::new_err(format!(
+                return Err(crate::errors::request_error(format!(
                     "{} changed since the road was pickled (size or modification time)",
                     path.display()
                 )));

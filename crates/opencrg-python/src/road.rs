@@ -9,7 +9,6 @@ use ::opencrg as crg;
 use ::opencrg::settings::Family;
 use ::opencrg::{Compat, DataFormat, LoadOptions};
 use numpy::{PyArray1, PyArrayMethods};
-use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
 use pyo3::types::{PyDict, PyList, PyTuple, PyType};
@@ -22,7 +21,7 @@ fn compat(given: Option<&str>) -> PyResult<Compat> {
         Some(text) => text.to_string(),
         None => std::env::var("OPENCRG_COMPAT").unwrap_or_default(),
     };
-    text.parse().map_err(|e: crg::UnknownCompat| PyValueError::new_err(e.to_string()))
+    text.parse().map_err(|e: crg::UnknownCompat| crate::errors::request_error(e.to_string()))
 }
 
 /// `ReferenceLine(u, x, y, phi, z)`, a named tuple made once.
@@ -105,13 +104,15 @@ impl Road {
         u: Option<(f64, f64)>,
         v: Option<(f64, f64)>,
         max_error: Option<f64>,
+        max_memory: Option<&Bound<'_, PyAny>>,
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<crg::mesh::Mesh> {
         let mut cp = crg::ContactPoint::new(self.shared());
         set_options(&mut cp, options)?;
+        let budget = errors::budget(max_memory)?;
         py.detach(|| match max_error {
-            Some(bound) => crg::simplify::simplified_mesh(&cp, u, v, bound, &mut |_| {}),
-            None => crg::mesh::grid_mesh(&cp, u, v),
+            Some(bound) => crg::simplify::simplified_mesh(&cp, u, v, bound, &budget, &mut |_| {}),
+            None => crg::mesh::grid_mesh(&cp, u, v, &budget),
         })
         .map_err(errors::to_py)
     }
@@ -197,8 +198,9 @@ impl Road {
     /// Writes the road to `path` in `format` (`"KDBI"`, `"KRBI"`, `"LDFI"` or `"LRFI"`).
     #[pyo3(signature = (path, format = "KDBI"))]
     fn write(&self, py: Python<'_>, path: PathBuf, format: &str) -> PyResult<()> {
-        let format = DataFormat::from_letters(format)
-            .ok_or_else(|| PyValueError::new_err(format!("unknown format '{format}': KDBI, KRBI, LDFI or LRFI")))?;
+        let format = DataFormat::from_letters(format).ok_or_else(|| {
+            crate::errors::request_error(format!("unknown format '{format}': KDBI, KRBI, LDFI or LRFI"))
+        })?;
         py.detach(|| crg::write(&self.inner, &path, format)).map_err(errors::to_py)
     }
 
@@ -326,16 +328,17 @@ impl Road {
     /// vertex `i * len(v) + j` lies at `u[i]`, `v[j]`). Cells without elevation are left out.
     /// With `max_error` (m): a simplified mesh whose z stays within it of the road's at
     /// every grid node, its `u` and `v` empty.
-    #[pyo3(signature = (u = None, v = None, max_error = None, **options))]
+    #[pyo3(signature = (u = None, v = None, max_error = None, *, max_memory = None, **options))]
     fn to_mesh<'py>(
         &self,
         py: Python<'py>,
         u: Option<(f64, f64)>,
         v: Option<(f64, f64)>,
         max_error: Option<f64>,
+        max_memory: Option<&Bound<'py, PyAny>>,
         options: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        let mesh = self.mesh(py, u, v, max_error, options)?;
+        let mesh = self.mesh(py, u, v, max_error, max_memory, options)?;
         let d = PyDict::new(py);
         d.set_item("positions", matrix(py, &mesh.positions)?)?;
         d.set_item("normals", matrix(py, &mesh.normals)?)?;
@@ -348,7 +351,8 @@ impl Road {
 
     /// Writes the surface mesh (see `to_mesh`) to `path`, the format from its extension:
     /// `.obj`, `.stl`, `.ply` or `.glb`.
-    #[pyo3(signature = (path, u = None, v = None, max_error = None, **options))]
+    #[pyo3(signature = (path, u = None, v = None, max_error = None, *, max_memory = None, **options))]
+    #[allow(clippy::too_many_arguments)]
     fn write_mesh<'py>(
         &self,
         py: Python<'py>,
@@ -356,12 +360,13 @@ impl Road {
         u: Option<(f64, f64)>,
         v: Option<(f64, f64)>,
         max_error: Option<f64>,
+        max_memory: Option<&Bound<'py, PyAny>>,
         options: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<()> {
         let format = crg::mesh_files::MeshFormat::from_path(&path).ok_or_else(|| {
-            PyValueError::new_err(format!("{}: unknown mesh format; .obj, .stl, .ply or .glb", path.display()))
+            crate::errors::request_error(format!("{}: unknown mesh format; .obj, .stl, .ply or .glb", path.display()))
         })?;
-        let mesh = self.mesh(py, u, v, max_error, options)?;
+        let mesh = self.mesh(py, u, v, max_error, max_memory, options)?;
         py.detach(|| crg::mesh_files::write_mesh(&mesh, &path, format)).map_err(errors::to_py)
     }
 

@@ -4,7 +4,6 @@
 use crate::errors;
 use numpy::{AllowTypeChange, PyArray1, PyArrayLike1};
 use opencrg as crg;
-use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use pyo3::IntoPyObjectExt;
@@ -65,11 +64,9 @@ pub(crate) fn iri<'py>(
     let z: Vec<f64> = profile.as_array().iter().copied().collect();
     let r = py.detach(|| crg::iri::response(&z, dx)).map_err(errors::to_py)?;
     let Some(segment) = segment else { return r.iri().into_bound_py_any(py) };
-    if !(segment > 0.0 && segment.is_finite()) {
-        return Err(PyValueError::new_err(format!("segment length {segment} m; it must be positive")));
-    }
     let length = z.len().saturating_sub(1) as f64 * dx;
-    let parts = crg::iri::segment_iris(&[(0.0, &r)], length, segment).into_iter().map(|x| x.unwrap_or(f64::NAN));
+    let parts = crg::iri::segment_iris(&[(0.0, &r)], length, segment).map_err(errors::to_py)?;
+    let parts = parts.into_iter().map(|x| x.unwrap_or(f64::NAN));
     (r.iri(), PyArray1::from_iter(py, parts)).into_bound_py_any(py)
 }
 

@@ -22,6 +22,7 @@
 // `write` (files to model and back, beside each other), `query` (evaluation, search,
 // contact points, modifiers, checks), `geo`, `analysis`, `export`, `synth`, and `tools` on top.
 mod base {
+    pub(crate) mod budget;
     pub(crate) mod compat;
     pub(crate) mod error;
     pub(crate) mod memory;
@@ -105,13 +106,14 @@ pub mod tools {
     pub use generate::{generate, Layout, Points, Surface};
     pub use import::{import, Import};
     pub use nodes::Progress;
-    pub use point_files::read_points;
+    pub use point_files::{parse_points, read_points};
     pub use resample::resample;
 }
 
 pub use analysis::{iri, psd, roughness};
+pub use base::budget::{parse_bytes, Budget};
 pub use base::settings;
-use base::{compat, error, memory};
+use base::{budget, compat, error, memory};
 use export::gltf;
 pub use export::{mesh, mesh_files, simplify};
 pub use geo::earth::Earth;

@@ -4,7 +4,7 @@
 use opencrg::mesh::grid_mesh;
 use opencrg::mesh_files::{write_mesh, MeshFormat};
 use opencrg::synth::RoadSpec;
-use opencrg::ContactPoint;
+use opencrg::{Budget, ContactPoint};
 use std::sync::Arc;
 
 /// A curved, sloped and banked road with uneven long sections and one NaN node.
@@ -28,7 +28,7 @@ fn road(with_nan: bool) -> ContactPoint {
 #[test]
 fn every_vertex_lies_on_the_surface() {
     let cp = road(false);
-    let mesh = grid_mesh(&cp, None, None).unwrap();
+    let mesh = grid_mesh(&cp, None, None, &Budget::machine()).unwrap();
     let r = cp.road().clone();
     let (nu, nv) = (r.grid().nu, r.grid().nv);
     assert_eq!(mesh.positions.len(), nu * nv);
@@ -61,7 +61,7 @@ fn vertices_found_again_from_x_and_y() {
         .starting_at(-20.0, 7.0, 1.1)
         .with_elevation(|u, v| 0.02 * (u * 0.9).cos() + 0.01 * v);
     let mut cp = ContactPoint::new(Arc::new(spec.build().unwrap()));
-    let mesh = grid_mesh(&cp, None, None).unwrap();
+    let mesh = grid_mesh(&cp, None, None, &Budget::machine()).unwrap();
     for p in &mesh.positions {
         let z = cp.xy_to_z(p[0], p[1]).unwrap();
         assert!((z - p[2]).abs() < 1e-9, "{p:?}: the surface is at {z}");
@@ -71,7 +71,7 @@ fn vertices_found_again_from_x_and_y() {
 #[test]
 fn ranges_and_gaps() {
     let cp = road(true);
-    let all = grid_mesh(&cp, None, None).unwrap();
+    let all = grid_mesh(&cp, None, None, &Budget::machine()).unwrap();
     let (nu, nv) = (cp.road().grid().nu, cp.road().grid().nv);
     // The evaluation gives NaN at the nodes whose cell holds the NaN value (the node and
     // its three neighbours towards smaller u and v); the cells touching them are left out.
@@ -79,19 +79,19 @@ fn ranges_and_gaps() {
     assert_eq!(nan.len(), 4, "{nan:?}");
     assert_eq!(all.triangles.len(), 2 * (nu - 1) * (nv - 1) - 2 * 9);
     assert!(all.triangles.iter().flatten().all(|&i| !nan.contains(&(i as usize))));
-    let part = grid_mesh(&cp, Some((10.0, 15.0)), Some((-0.5, 1.0))).unwrap();
+    let part = grid_mesh(&cp, Some((10.0, 15.0)), Some((-0.5, 1.0)), &Budget::machine()).unwrap();
     // u 10..15 at 0.5 m: 11 nodes; v -0.3, 0, 0.9: 3 sections.
     assert_eq!(part.positions.len(), 11 * 3);
     assert_eq!(part.texcoords[0], [0.0, 0.0]);
     assert_eq!(*part.texcoords.last().unwrap(), [1.0, 1.0]);
-    let e = grid_mesh(&cp, Some((50.0, 60.0)), None).unwrap_err().to_string();
+    let e = grid_mesh(&cp, Some((50.0, 60.0)), None, &Budget::machine()).unwrap_err().to_string();
     assert!(e.contains("u 50:60") && e.contains("fewer than two"), "{e}");
 }
 
 #[test]
 fn files_follow_their_formats() {
     let cp = road(true);
-    let mesh = grid_mesh(&cp, None, None).unwrap();
+    let mesh = grid_mesh(&cp, None, None, &Budget::machine()).unwrap();
     let dir = scratch_dir("mesh");
     let (nvert, ntri) = (mesh.positions.len(), mesh.triangles.len());
 
@@ -139,7 +139,7 @@ fn files_follow_their_formats() {
 #[test]
 fn gltf_reads_back() {
     let cp = road(true);
-    let mesh = grid_mesh(&cp, None, None).unwrap();
+    let mesh = grid_mesh(&cp, None, None, &Budget::machine()).unwrap();
     let dir = scratch_dir("glb");
     let path = dir.join("road.glb");
     write_mesh(&mesh, &path, MeshFormat::from_path(&path).unwrap()).unwrap();

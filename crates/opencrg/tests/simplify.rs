@@ -4,7 +4,7 @@
 
 use opencrg::simplify::{simplified_mesh, Stage};
 use opencrg::synth::RoadSpec;
-use opencrg::ContactPoint;
+use opencrg::{Budget, ContactPoint};
 use std::collections::HashMap;
 use std::sync::Arc;
 
@@ -73,7 +73,7 @@ fn smooth_road_few_triangles_within_the_bound() {
     assert_eq!((nu - 1) * (nv - 1), 5_000_000);
     let bound = 0.001;
     let mut stages = Vec::new();
-    let mesh = simplified_mesh(&cp, None, None, bound, &mut |s| stages.push(s)).unwrap();
+    let mesh = simplified_mesh(&cp, None, None, bound, &Budget::machine(), &mut |s| stages.push(s)).unwrap();
     let full = 2 * (nu - 1) * (nv - 1);
     assert!(mesh.triangles.len() * 100 <= full, "{} triangles of {full}", mesh.triangles.len());
     assert!(mesh.triangles.len() > 100, "{} triangles", mesh.triangles.len());
@@ -115,7 +115,7 @@ fn bumpy_road_without_cracks() {
     });
     let cp = contact_point(spec);
     let bound = 0.0005;
-    let mesh = simplified_mesh(&cp, None, None, bound, &mut |_| {}).unwrap();
+    let mesh = simplified_mesh(&cp, None, None, bound, &Budget::machine(), &mut |_| {}).unwrap();
     let (nu, nv) = (cp.road().grid().nu, cp.road().grid().nv);
     assert!(mesh.triangles.len() < (nu - 1) * (nv - 1), "{} triangles", mesh.triangles.len());
 
@@ -170,7 +170,7 @@ fn bumpy_road_without_cracks() {
 fn a_bound_that_is_not_a_positive_number_is_refused() {
     let cp = contact_point(RoadSpec::straight(10.0, 2.0, 0.5, 0.5));
     for bound in [0.0, -1.0, f64::NAN, f64::INFINITY] {
-        let err = simplified_mesh(&cp, None, None, bound, &mut |_| {}).unwrap_err().to_string();
+        let err = simplified_mesh(&cp, None, None, bound, &Budget::machine(), &mut |_| {}).unwrap_err().to_string();
         assert!(err.contains("largest error"), "{err}");
     }
 }

@@ -4,8 +4,13 @@
 
 use opencrg::synth::RoadSpec;
 use opencrg::tools::{self, ChannelAction, Filter, Import, Layout, LineChannel, Points};
-use opencrg::{ContactPoint, Road};
+use opencrg::{Budget, ContactPoint, Road};
 use std::sync::Arc;
+
+/// The default memory limit of the tools.
+fn machine() -> Budget {
+    Budget::machine()
+}
 
 const UNEVEN_V: [f64; 11] = [-3.0, -2.5, -1.7, -1.0, -0.2, 0.0, 0.3, 1.1, 2.0, 2.4, 3.0];
 
@@ -77,7 +82,7 @@ fn two_cuts_appended_are_the_uncut_road() {
     let road = winding_road();
     let first = tools::cut(&road, (0.0, 93.0), None).unwrap();
     let second = Arc::new(tools::cut(&road, (93.0, 200.0), None).unwrap());
-    let joined = tools::append(&first, &second).unwrap();
+    let joined = tools::append(&first, &second, &machine()).unwrap();
     assert_eq!(joined.reference_line().n, road.reference_line().n);
     let (worst, _) = worst_at_nodes(&road, &joined);
     assert!(worst < 1e-4, "{worst}");
@@ -89,7 +94,7 @@ fn two_cuts_appended_are_the_uncut_road() {
 fn an_appended_road_continues_from_the_end_point_heading_and_height() {
     let road = winding_road();
     let other = Arc::new(RoadSpec::straight(30.0, 6.0, 0.2, 0.25).with_elevation(|u, _| 0.01 * u).build().unwrap());
-    let joined = tools::append(&road, &other).unwrap();
+    let joined = tools::append(&road, &other, &machine()).unwrap();
     let (l, j) = (road.reference_line(), joined.reference_line());
     // The other road's u increment is resampled to the first's.
     assert_eq!(j.n, l.n + 300);
@@ -103,17 +108,17 @@ fn an_appended_road_continues_from_the_end_point_heading_and_height() {
     assert!((z_after - (z_end + 0.1 - 0.0)).abs() < 0.05, "{z_end} {z_after}");
     let far = Arc::new(RoadSpec::straight(30.0, 2.0, 0.1, 0.5).build().unwrap());
     let shifted = tools::cut(&far, (0.0, 30.0), None).unwrap();
-    assert!(tools::append(&road, &Arc::new(shifted)).is_ok());
+    assert!(tools::append(&road, &Arc::new(shifted), &machine()).is_ok());
 }
 
 #[test]
 fn resampling_keeps_the_surface_at_the_original_nodes_and_everywhere_at_its_own() {
     let road = winding_road();
-    let finer = tools::resample(&road, Some(0.05), None).unwrap();
+    let finer = tools::resample(&road, Some(0.05), None, &machine()).unwrap();
     assert_eq!(finer.reference_line().n, 2 * road.reference_line().n - 1);
     let (worst, _) = worst_at_nodes(&Arc::new(finer.clone()), &road);
     assert!(worst < 1e-4, "at the original nodes: {worst}");
-    let coarser = tools::resample(&road, Some(0.37), Some(0.2)).unwrap();
+    let coarser = tools::resample(&road, Some(0.37), Some(0.2), &machine()).unwrap();
     assert_eq!(coarser.increments(), (0.37, 0.2));
     let (worst, n) = worst_at_nodes(&road, &coarser);
     assert!(n > 500 * 30);
@@ -163,18 +168,18 @@ fn filters_change_the_grid_as_they_say() {
         })
         .build()
         .unwrap();
-    let median = tools::filter(&spike, Filter::Median(3)).unwrap();
+    let median = tools::filter(&spike, Filter::Median(3), &machine()).unwrap();
     assert_eq!(median.grid().values().iter().filter(|z| **z > 0.5).count(), 0);
-    let gauss = tools::filter(&spike, Filter::Gauss(0.1)).unwrap();
+    let gauss = tools::filter(&spike, Filter::Gauss(0.1), &machine()).unwrap();
     let peak = gauss.grid().values().iter().copied().filter(|z| !z.is_nan()).fold(0.0f32, f32::max);
     assert!(peak > 0.05 && peak < 0.3, "{peak}");
-    let limited = tools::filter(&spike, Filter::Limit(-0.1, 0.25)).unwrap();
+    let limited = tools::filter(&spike, Filter::Limit(-0.1, 0.25), &machine()).unwrap();
     assert_eq!(limited.grid().values().iter().copied().filter(|z| !z.is_nan()).fold(0.0f32, f32::max), 0.25);
     assert!(spike.grid().values().iter().any(|z| z.is_nan()));
-    let filled = tools::filter(&spike, Filter::FillNan).unwrap();
+    let filled = tools::filter(&spike, Filter::FillNan, &machine()).unwrap();
     assert!(filled.grid().values().iter().all(|z| !z.is_nan()));
-    assert!(tools::filter(&spike, Filter::Median(2)).is_err());
-    assert!(tools::filter(&spike, Filter::Gauss(-1.0)).is_err());
+    assert!(tools::filter(&spike, Filter::Median(2), &machine()).is_err());
+    assert!(tools::filter(&spike, Filter::Gauss(-1.0), &machine()).is_err());
 }
 
 /// y = 20 sin(x / 40) and z = 0.03 x, sampled every 2 m of x.
@@ -188,7 +193,7 @@ fn sine_points() -> Points {
 #[test]
 fn a_generated_line_follows_the_smooth_curve_through_its_points() {
     let points = sine_points();
-    let road = tools::generate(&points, Layout { width: 4.0, u_inc: 0.1, v_inc: 0.5 }, None).unwrap();
+    let road = tools::generate(&points, Layout { width: 4.0, u_inc: 0.1, v_inc: 0.5 }, None, &machine()).unwrap();
     let l = road.reference_line();
     assert!(l.n > 3000);
     let mut worst = 0.0f64;
@@ -222,6 +227,7 @@ fn a_generated_line_follows_the_smooth_curve_through_its_points() {
         &points,
         Layout { width: 4.0, u_inc: 0.1, v_inc: 0.5 },
         Some(&|u: f64, v: f64| 0.01 * u.sin() + v * 0.02),
+        &machine(),
     )
     .unwrap();
     let (z0, z1) = (surfaced.grid().at(100, 0), surfaced.grid().at(100, 8));
@@ -232,9 +238,9 @@ fn a_generated_line_follows_the_smooth_curve_through_its_points() {
 fn a_line_needs_points() {
     let one = Points { x: vec![1.0], y: vec![2.0], z: None };
     let layout = Layout { width: 4.0, u_inc: 0.1, v_inc: 0.5 };
-    assert!(tools::generate(&one, layout, None).unwrap_err().to_string().contains("at least two points"));
+    assert!(tools::generate(&one, layout, None, &machine()).unwrap_err().to_string().contains("at least two points"));
     let same = Points { x: vec![1.0, 1.0, 3.0], y: vec![2.0, 2.0, 3.0], z: None };
-    assert!(tools::generate(&same, layout, None).unwrap_err().to_string().contains("coincide"));
+    assert!(tools::generate(&same, layout, None, &machine()).unwrap_err().to_string().contains("coincide"));
 }
 
 /// A known surface.
@@ -267,7 +273,7 @@ fn an_imported_cloud_gives_the_surface_it_was_sampled_from() {
     let cloud = cloud();
     let line = Points { x: vec![5.0, 30.0, 60.0, 95.0], y: vec![0.0, 1.5, -1.0, 0.5], z: None };
     let how = Import { refline: Some(line), width: Some(6.0), u_inc: 0.2, v_inc: 0.2, ..Import::default() };
-    let road = Arc::new(tools::import(&cloud, &how, &|_, _, _| {}).unwrap());
+    let road = Arc::new(tools::import(&cloud, &how, &|_, _, _| {}, &machine()).unwrap());
     let cp = ContactPoint::new(road.clone());
     let (mut worst, mut n) = (0.0f64, 0);
     let l = road.reference_line();
@@ -283,13 +289,15 @@ fn an_imported_cloud_gives_the_surface_it_was_sampled_from() {
     assert!(n > 400 * 30);
     assert!(worst < 0.002, "{worst}");
     // Without a line: one fitted through the cloud, as wide as the cloud reaches.
-    let fitted = tools::import(&cloud, &Import { u_inc: 0.5, v_inc: 0.5, ..Import::default() }, &|_, _, _| {}).unwrap();
+    let fitted =
+        tools::import(&cloud, &Import { u_inc: 0.5, v_inc: 0.5, ..Import::default() }, &|_, _, _| {}, &machine())
+            .unwrap();
     let w = fitted.v_range().1 - fitted.v_range().0;
     assert!(w > 10.0 && w <= 12.0, "{w}");
     // A line beyond the cloud.
     let beyond = Points { x: vec![50.0, 300.0], y: vec![0.0, 0.0], z: None };
     let how = Import { refline: Some(beyond), width: Some(4.0), u_inc: 0.5, v_inc: 0.5, ..Import::default() };
-    let e = tools::import(&cloud, &how, &|_, _, _| {}).unwrap_err().to_string();
+    let e = tools::import(&cloud, &how, &|_, _, _| {}, &machine()).unwrap_err().to_string();
     assert!(e.contains("beyond the cloud"), "{e}");
 }
 
@@ -349,15 +357,15 @@ fn point_files_are_read_in_every_format() {
 #[test]
 fn compare_finds_the_largest_difference_and_where() {
     let road = winding_road();
-    let same = tools::compare(&road, &road, &|_, _, _| {});
+    let same = tools::compare(&road, &road, &|_, _, _| {}).unwrap();
     assert_eq!(same.compared, road.grid().values().len());
     assert!(same.max_difference < 1e-9);
-    let bumped = Arc::new(tools::filter(&road, Filter::Limit(-0.005, 0.005)).unwrap());
-    let c = tools::compare(&road, &bumped, &|_, _, _| {});
+    let bumped = Arc::new(tools::filter(&road, Filter::Limit(-0.005, 0.005), &machine()).unwrap());
+    let c = tools::compare(&road, &bumped, &|_, _, _| {}).unwrap();
     assert!((c.max_difference - 0.007).abs() < 1e-3, "{c:?}");
     assert!(c.rms > 0.0 && c.rms < c.max_difference);
     let part = Arc::new(tools::cut(&road, (0.0, 100.0), None).unwrap());
-    let c = tools::compare(&road, &part, &|_, _, _| {});
+    let c = tools::compare(&road, &part, &|_, _, _| {}).unwrap();
     assert!(c.only_first > 0 && c.max_difference < 1e-4, "{c:?}");
 }
 
@@ -368,7 +376,7 @@ fn bad_ranges_are_refused_and_the_input_left_alone() {
     let e = tools::cut(&road, (300.0, 400.0), None).unwrap_err().to_string();
     assert!(e.contains("u range 300:400") && e.contains("fewer than two"), "{e}");
     assert!(tools::cut(&road, (10.0, 20.0), Some((5.0, 9.0))).is_err());
-    assert!(tools::resample(&road, Some(500.0), None).is_err());
-    assert!(tools::resample(&road, Some(-1.0), None).is_err());
+    assert!(tools::resample(&road, Some(500.0), None, &machine()).is_err());
+    assert!(tools::resample(&road, Some(-1.0), None, &machine()).is_err());
     assert_eq!(road.grid().values(), &before[..]);
 }

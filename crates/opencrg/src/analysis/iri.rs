@@ -16,7 +16,7 @@
 //! - the states start at rest on the slope of the first 11 m (both displacement rates
 //!   equal to it, both accelerations 0).
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Num, Result};
 
 /// The golden car's tyre spring per unit sprung mass, in s⁻².
 pub const K1: f64 = 653.0;
@@ -168,8 +168,16 @@ pub fn base_samples(dx: f64) -> usize {
 /// The IRI in m/km of each `segment` metres of a track `length` m long (the last segment
 /// ends at the track's end), over the steps of `runs`: responses with where their first
 /// sample lies (m from the track's start). A step counts in the segment its position
-/// (see [`Response::position`]) falls in; `None` for a segment without steps.
-pub fn segment_iris(runs: &[(f64, &Response)], length: f64, segment: f64) -> Vec<Option<f64>> {
+/// (see [`Response::position`]) falls in; `None` for a segment without steps. Refused: a
+/// segment that is not a positive number or shorter than the runs' sample interval.
+pub fn segment_iris(runs: &[(f64, &Response)], length: f64, segment: f64) -> Result<Vec<Option<f64>>> {
+    let dx = runs.iter().map(|(_, r)| r.dx).fold(0.0, f64::max);
+    if !(segment > 0.0 && segment.is_finite()) || segment < dx {
+        return Err(Error::Analysis(format!(
+            "segment length {} m; it must be a positive number of at least the sample interval ({dx} m)",
+            Num(segment)
+        )));
+    }
     let count = (length / segment - 1e-9).ceil().max(1.0) as usize;
     let mut sums = vec![(0.0, 0usize); count];
     for (start, response) in runs {
@@ -179,7 +187,7 @@ pub fn segment_iris(runs: &[(f64, &Response)], length: f64, segment: f64) -> Vec
             sums[k].1 += 1;
         }
     }
-    sums.iter().map(|&(sum, n)| (n > 0).then(|| 1000.0 * sum / n as f64)).collect()
+    Ok(sums.iter().map(|&(sum, n)| (n > 0).then(|| 1000.0 * sum / n as f64)).collect())
 }
 
 /// Drives the golden car along `profile` (elevations in m, `dx` m apart, all finite).

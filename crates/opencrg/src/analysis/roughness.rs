@@ -8,7 +8,7 @@
 //! the longest run, and the metres left out are reported.
 
 use crate::contact::ContactPoint;
-use crate::error::{Error, Result};
+use crate::error::{Error, Num, Result};
 use crate::iri;
 use crate::psd::{self, Spectrum};
 use crate::road::Road;
@@ -52,7 +52,8 @@ pub fn profile(road: &Arc<Road>, v: f64) -> Result<Vec<f64>> {
     let (v_right, v_left) = road.v_range();
     if !(v >= v_right && v <= v_left) {
         return Err(Error::Analysis(format!(
-            "track at v = {v} m lies outside the road, whose long sections span v = {v_right} to {v_left} m"
+            "track at v = {} m lies outside the road, whose long sections span v = {v_right} to {v_left} m",
+            Num(v)
         )));
     }
     let du = road.increments().0;
@@ -85,11 +86,14 @@ fn finite_runs(z: &[f64]) -> Vec<std::ops::Range<usize>> {
 /// `segment` metres of u. Refused: a track outside the road, a road too short for the
 /// IRI's initial 11 m or the density's bands, a track without any run long enough.
 pub fn roughness(road: &Arc<Road>, tracks: &[f64], segment: f64) -> Result<Vec<Track>> {
-    if !(segment > 0.0 && segment.is_finite()) {
-        return Err(Error::Analysis(format!("segment length {segment} m; it must be positive")));
-    }
     let (u_first, u_last) = road.u_range();
     let du = road.increments().0;
+    if !(segment > 0.0 && segment.is_finite()) || segment < du {
+        return Err(Error::Analysis(format!(
+            "segment length {} m; it must be a positive number of at least the road's u increment ({du} m)",
+            Num(segment)
+        )));
+    }
     tracks
         .iter()
         .map(|&v| {
@@ -114,7 +118,7 @@ pub fn roughness(road: &Arc<Road>, tracks: &[f64], segment: f64) -> Result<Vec<T
             let steps: usize = driven.iter().map(|(_, r)| r.rectified.len()).sum();
             let total: f64 = driven.iter().flat_map(|(_, r)| &r.rectified).sum();
             let runs: Vec<(f64, &iri::Response)> = driven.iter().map(|(start, r)| (*start as f64 * du, r)).collect();
-            let segments = iri::segment_iris(&runs, u_last - u_first, segment)
+            let segments = iri::segment_iris(&runs, u_last - u_first, segment)?
                 .into_iter()
                 .enumerate()
                 .map(|(k, iri)| Segment {

@@ -82,6 +82,21 @@ pub enum Error {
     },
 }
 
+/// A number a user gave, written back as people write it: in powers of ten when very
+/// small or large (below 10^-4, from 10^6: `1e-9`, `3e9`), plainly otherwise.
+pub(crate) struct Num(pub f64);
+
+impl std::fmt::Display for Num {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let x = self.0;
+        if x != 0.0 && x.is_finite() && !(1e-4..1e6).contains(&x.abs()) {
+            write!(f, "{x:e}")
+        } else {
+            write!(f, "{x}")
+        }
+    }
+}
+
 /// Shorthand for results of this crate.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
 

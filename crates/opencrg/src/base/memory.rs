@@ -1,6 +1,7 @@
 //! The memory of the large arrays evaluation reads: how the elevation grid is
-//! allocated, how lookups ask for it ahead of time, and how the pages of a mapped file
-//! are given back once read (the platform differences of all three live here).
+//! allocated, how lookups ask for it ahead of time, how the pages of a mapped file
+//! are given back once read, and how much memory the process can still get (the
+//! platform differences of all four live here).
 //!
 //! Random queries over a grid of tens of megabytes miss the processor's address
 //! translation cache on nearly every call when the grid sits in 4 KiB pages; in
@@ -59,6 +60,104 @@ pub(crate) fn release_mapped(map: &memmap2::Mmap, start: usize, len: usize) {
 
 #[cfg(not(unix))]
 pub(crate) fn release_mapped(_map: &memmap2::Mmap, _start: usize, _len: usize) {}
+
+/// The bytes this process can still get: the least of the system's available memory,
+/// the room left in its control group and under its address-space limit, where the
+/// platform tells them; `None` where it tells none.
+pub(crate) fn available_bytes() -> Option<u64> {
+    [system_available(), group_room(), address_space_room()].into_iter().flatten().min()
+}
+
+/// Linux: `MemAvailable` of `/proc/meminfo` (what can be had without swapping).
+#[cfg(target_os = "linux")]
+fn system_available() -> Option<u64> {
+    let text = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let line = text.lines().find(|l| l.starts_with("MemAvailable:"))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib * 1024)
+}
+
+/// Windows: the physical memory available (`GlobalMemoryStatusEx`).
+#[cfg(windows)]
+fn system_available() -> Option<u64> {
+    #[repr(C)]
+    struct MemoryStatusEx {
+        length: u32,
+        memory_load: u32,
+        total_phys: u64,
+        avail_phys: u64,
+        total_page_file: u64,
+        avail_page_file: u64,
+        total_virtual: u64,
+        avail_virtual: u64,
+        avail_extended_virtual: u64,
+    }
+    #[link(name = "kernel32")]
+    extern "system" {
+        fn GlobalMemoryStatusEx(buffer: *mut MemoryStatusEx) -> i32;
+    }
+    let mut status = MemoryStatusEx {
+        length: std::mem::size_of::<MemoryStatusEx>() as u32,
+        memory_load: 0,
+        total_phys: 0,
+        avail_phys: 0,
+        total_page_file: 0,
+        avail_page_file: 0,
+        total_virtual: 0,
+        avail_virtual: 0,
+        avail_extended_virtual: 0,
+    };
+    // SAFETY: the structure has the layout the call documents, its length field set as
+    // it requires; the call writes only inside it.
+    let ok = unsafe { GlobalMemoryStatusEx(&mut status) };
+    (ok != 0).then_some(status.avail_phys.min(status.avail_virtual))
+}
+
+#[cfg(not(any(target_os = "linux", windows)))]
+fn system_available() -> Option<u64> {
+    None
+}
+
+/// Linux: the room under the memory limit of the process's control group (cgroup v2:
+/// `memory.max` less `memory.current`), as containers set it.
+#[cfg(target_os = "linux")]
+fn group_room() -> Option<u64> {
+    let own = std::fs::read_to_string("/proc/self/cgroup").ok()?;
+    let path = own.lines().find_map(|l| l.strip_prefix("0::"))?;
+    let dir = std::path::Path::new("/sys/fs/cgroup").join(path.trim_start_matches('/'));
+    let read = |name: &str| std::fs::read_to_string(dir.join(name)).ok()?.trim().parse::<u64>().ok();
+    let max = read("memory.max")?;
+    Some(max.saturating_sub(read("memory.current").unwrap_or(0)))
+}
+
+#[cfg(not(target_os = "linux"))]
+fn group_room() -> Option<u64> {
+    None
+}
+
+/// Unix: the room under the address-space limit (`ulimit -v`) beyond what the process
+/// maps already (Linux tells that in `/proc/self/statm`; elsewhere the limit itself).
+#[cfg(unix)]
+fn address_space_room() -> Option<u64> {
+    let mut limit = libc::rlimit { rlim_cur: 0, rlim_max: 0 };
+    // SAFETY: getrlimit writes one rlimit into the structure it is given.
+    if unsafe { libc::getrlimit(libc::RLIMIT_AS, &mut limit) } != 0 || limit.rlim_cur == libc::RLIM_INFINITY {
+        return None;
+    }
+    let mapped = std::fs::read_to_string("/proc/self/statm")
+        .ok()
+        .and_then(|s| s.split_whitespace().next()?.parse::<u64>().ok())
+        .map_or(0, |pages| {
+            // SAFETY: sysconf only reads a system constant.
+            pages * unsafe { libc::sysconf(libc::_SC_PAGESIZE) }.max(4096) as u64
+        });
+    Some(limit.rlim_cur.saturating_sub(mapped))
+}
+
+#[cfg(not(unix))]
+fn address_space_room() -> Option<u64> {
+    None
+}
 
 /// The cache a prefetch fills, as x86 numbers it: the first level (`_MM_HINT_T0`, on
 /// Arm `PLDL1KEEP`) or the second (`_MM_HINT_T1`, `PLDL2KEEP`).

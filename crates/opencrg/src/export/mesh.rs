@@ -4,8 +4,13 @@
 //! the road's modifiers as applied), two triangles per cell; cells with a corner without
 //! elevation (NaN) are left out.
 
+use crate::budget::Budget;
 use crate::contact::ContactPoint;
 use crate::error::{Error, Result};
+
+/// The memory of a mesh vertex: position, normal and texture coordinates, its share of
+/// the triangles, and the same again as the bytes of a file being written.
+pub(crate) const VERTEX_BYTES: f64 = 136.0;
 
 /// A triangle mesh: positions in the road's x/y/z frame (m), upward unit normals, texture
 /// coordinates (u and v of the road, scaled to 0..1 over the mesh), and triangles as
@@ -58,14 +63,20 @@ pub(crate) fn grid_nodes(
 
 /// The mesh of the surface the contact point evaluates, over the grid nodes with u in
 /// `u` and v in `v` (m, inclusive; the whole road when `None`). Refused: a range holding
-/// fewer than two nodes, a mesh of 2^32 vertices or more.
-pub fn grid_mesh(cp: &ContactPoint, u: Option<(f64, f64)>, v: Option<(f64, f64)>) -> Result<Mesh> {
-    grid_mesh_every(cp, u, v, 1)
+/// fewer than two nodes, a mesh of 2^32 vertices or more, a mesh beyond `budget`.
+pub fn grid_mesh(cp: &ContactPoint, u: Option<(f64, f64)>, v: Option<(f64, f64)>, budget: &Budget) -> Result<Mesh> {
+    grid_mesh_every(cp, u, v, 1, budget)
 }
 
 /// [`grid_mesh`] over every `step`-th node along u (and the last one in the range): a
 /// lighter mesh for a view, whose vertices still lie on the surface.
-pub fn grid_mesh_every(cp: &ContactPoint, u: Option<(f64, f64)>, v: Option<(f64, f64)>, step: usize) -> Result<Mesh> {
+pub fn grid_mesh_every(
+    cp: &ContactPoint,
+    u: Option<(f64, f64)>,
+    v: Option<(f64, f64)>,
+    step: usize,
+    budget: &Budget,
+) -> Result<Mesh> {
     let (all, vs) = grid_nodes(cp, u, v)?;
     let (last, step) = (all.len() - 1, step.max(1));
     let mut us: Vec<f64> = all.iter().copied().step_by(step).collect();
@@ -77,6 +88,8 @@ pub fn grid_mesh_every(cp: &ContactPoint, u: Option<(f64, f64)>, v: Option<(f64,
     if count > u32::MAX as usize {
         return Err(Error::Analysis(format!("a mesh of {count} vertices is more than 32-bit indices can hold")));
     }
+    let request = format!("a mesh of {} x {} grid nodes", us.len(), vs.len());
+    budget.admit(&request, count as f64, "vertices", VERTEX_BYTES)?;
     let (u0, u_span) = (us[0], us[us.len() - 1] - us[0]);
     let (v0, v_span) = (vs[0], vs[vs.len() - 1] - vs[0]);
     let mut mesh = Mesh {

@@ -18,9 +18,10 @@
 //! Between nodes the road is bilinear in each cell; at the smallest level, triangles
 //! are finer than the cells.
 
+use crate::budget::Budget;
 use crate::contact::ContactPoint;
 use crate::error::{Error, Result};
-use crate::mesh::{grid_nodes, Mesh};
+use crate::mesh::{grid_nodes, Mesh, VERTEX_BYTES};
 
 /// The fewest lattice cells across a tile: narrow roads get tiles longer than their
 /// width, so that a smooth stretch needs few triangles.
@@ -210,7 +211,7 @@ fn needed_points(lattice: &Lattice, cover: &Cover, bound: f64, progress: &mut dy
 fn lattice_over(cp: &ContactPoint, us: &[f64], vs: &[f64]) -> Result<Lattice> {
     let size = (vs.len() - 1).next_power_of_two().max(MIN_TILE);
     let tiles = (us.len() - 1).div_ceil(size);
-    let (nu, nv) = (tiles * size + 1, size + 1);
+    let (nu, nv) = lattice_size(us.len(), vs.len());
     if nu.checked_mul(nv).is_none_or(|n| n > u32::MAX as usize) {
         return Err(Error::Analysis(format!("a lattice of {nu} x {nv} points is more than 32-bit indices can hold")));
     }
@@ -225,6 +226,13 @@ fn lattice_over(cp: &ContactPoint, us: &[f64], vs: &[f64]) -> Result<Lattice> {
         }
     }
     Ok(lattice)
+}
+
+/// The points of the lattice over `nu` x `nv` grid nodes along u and across (see
+/// [`lattice_over`]).
+fn lattice_size(nu: usize, nv: usize) -> (usize, usize) {
+    let size = (nv - 1).next_power_of_two().max(MIN_TILE);
+    ((nu - 1).div_ceil(size) * size + 1, size + 1)
 }
 
 /// Where a simplified mesh stands, for a progress display.
@@ -249,6 +257,7 @@ pub fn simplified_mesh(
     u: Option<(f64, f64)>,
     v: Option<(f64, f64)>,
     max_error: f64,
+    budget: &Budget,
     progress: &mut dyn FnMut(Stage),
 ) -> Result<Mesh> {
     if !(max_error > 0.0 && max_error.is_finite()) {
@@ -256,6 +265,11 @@ pub fn simplified_mesh(
     }
     progress(Stage::Sampling);
     let (us, vs) = grid_nodes(cp, u, v)?;
+    let (nu, nv) = lattice_size(us.len(), vs.len());
+    let request = format!("a simplified mesh of {} x {} grid nodes", us.len(), vs.len());
+    // The grid's elevations, the lattice's, which of its points are needed and their
+    // vertices, at worst a vertex of the mesh at every one.
+    budget.admit(&request, (nu as f64) * (nv as f64), "lattice points", 8.0 + 8.0 + 1.0 + 4.0 + VERTEX_BYTES)?;
     let z = us.iter().flat_map(|&u| vs.iter().map(move |&v| (u, v))).map(|(u, v)| cp.uv_to_z(u, v).unwrap_or(f64::NAN));
     let z = z.collect();
     let lattice = lattice_over(cp, &us, &vs)?;

@@ -2,6 +2,7 @@
 
 use super::draft::Draft;
 use super::resample;
+use crate::budget::Budget;
 use crate::error::{Error, Result};
 use crate::road::Road;
 use std::sync::Arc;
@@ -10,8 +11,9 @@ use std::sync::Arc;
 /// at `first`'s end point with `first`'s end heading and elevation. Its first cross
 /// section lies on `first`'s last, which the result keeps. When the increments or long
 /// sections differ, `second` is resampled onto `first`'s (its nodes outside `first`'s v
-/// range are NaN); roads whose v ranges do not overlap are refused.
-pub fn append(first: &Road, second: &Arc<Road>) -> Result<Road> {
+/// range are NaN); roads whose v ranges do not overlap are refused, and a resampled
+/// `second` beyond `budget`.
+pub fn append(first: &Road, second: &Arc<Road>, budget: &Budget) -> Result<Road> {
     let a = Draft::of(first);
     let same_u = (a.u_inc - second.increments().0).abs() <= 1e-9 * a.u_inc;
     let same_v = a.v.len() == second.grid().v.len()
@@ -30,7 +32,8 @@ pub fn append(first: &Road, second: &Arc<Road>) -> Result<Road> {
                 )));
             }
         }
-        resample::onto(second, a.u_inc, a.v.clone(), a.regular, &|_, _, _| {})?
+        let request = format!("the second road resampled onto the first's grid (u increment {} m)", a.u_inc);
+        resample::onto(second, a.u_inc, a.v.clone(), a.regular, &request, budget, &|_, _, _| {})?
     };
     let what = format!(
         "appended by opencrg {}: {} continued by {}",

@@ -1,6 +1,7 @@
 //! How far two roads' surfaces are apart.
 
 use super::nodes::{at_nodes, Progress, SurfaceProbe};
+use crate::error::Result;
 use crate::road::Road;
 use std::sync::Arc;
 
@@ -24,8 +25,9 @@ pub struct Comparison {
 
 /// The second surface against the first at the first's grid nodes: each node's z on
 /// the first road and the second's z at the same x/y, both as the library evaluates
-/// them (the second found by its own x/y search).
-pub fn compare(first: &Arc<Road>, second: &Arc<Road>, progress: Progress) -> Comparison {
+/// them (the second found by its own x/y search). Refused: memory the system does not
+/// give for the first road's nodes.
+pub fn compare(first: &Arc<Road>, second: &Arc<Road>, progress: Progress) -> Result<Comparison> {
     let v = first.grid().v.clone();
     let probes = || (crate::ContactPoint::new(first.clone()), SurfaceProbe::new(second));
     // Each node's difference; +inf where only the first has a value, NaN where it has none.
@@ -44,7 +46,7 @@ pub fn compare(first: &Arc<Road>, second: &Arc<Road>, progress: Progress) -> Com
             }
         },
         progress,
-    );
+    )?;
     let nu = first.reference_line().n;
     let mut c =
         Comparison { compared: 0, only_first: 0, max_difference: 0.0, at: [f64::NAN; 4], signed: 0.0, rms: 0.0 };
@@ -74,5 +76,5 @@ pub fn compare(first: &Arc<Road>, second: &Arc<Road>, progress: Progress) -> Com
         c.at = [u, v[iv], x, y];
         c.rms = (sum2 / c.compared as f64).sqrt();
     }
-    c
+    Ok(c)
 }

@@ -2,7 +2,7 @@
 //! the grid nodes inside, left where they were.
 
 use super::draft::Draft;
-use crate::error::{Error, Result};
+use crate::error::{Error, Num, Result};
 use crate::road::Road;
 
 /// The part of `road` between `u.0` and `u.1` (and between `v.0` and `v.1`, when
@@ -43,7 +43,10 @@ fn nodes_within(range: (f64, f64), at: impl Fn(usize) -> f64, n: usize) -> Optio
 fn outside(axis: &str, asked: (f64, f64), road: (f64, f64)) -> Error {
     Error::Request(format!(
         "{axis} range {}:{} holds fewer than two grid nodes of the road ({axis} from {} to {} m)",
-        asked.0, asked.1, road.0, road.1
+        Num(asked.0),
+        Num(asked.1),
+        road.0,
+        road.1
     ))
 }
 

@@ -3,7 +3,8 @@
 //! reference line, its slope and its banking stay as they are.
 
 use super::draft::Draft;
-use crate::error::{Error, Result};
+use crate::budget::{filled, Budget};
+use crate::error::{Error, Num, Result};
 use crate::road::Road;
 
 /// What to do to the grid.
@@ -24,7 +25,7 @@ pub enum Filter {
 impl std::fmt::Display for Filter {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            Filter::Gauss(s) => write!(f, "Gaussian of sigma {s} m"),
+            Filter::Gauss(s) => write!(f, "Gaussian of sigma {} m", Num(*s)),
             Filter::Median(n) => write!(f, "median of {n} x {n} nodes"),
             Filter::Limit(a, b) => write!(f, "values limited to {a} to {b} m"),
             Filter::FillNan => write!(f, "NaN filled"),
@@ -32,26 +33,51 @@ impl std::fmt::Display for Filter {
     }
 }
 
-/// `road` with `filter` applied to its grid.
-pub fn filter(road: &Road, filter: Filter) -> Result<Road> {
-    let mut d = Draft::of(road);
-    let (nu, nv) = (d.nu(), d.nv());
+/// `road` with `filter` applied to its grid. Refused: a parameter out of range, a window
+/// wider than the road in both directions (it would read the whole grid for every node),
+/// the filter's copies of the grid beyond `budget`.
+pub fn filter(road: &Road, filter: Filter, budget: &Budget) -> Result<Road> {
+    let (nu, nv) = (road.grid().nu, road.grid().nv);
+    let (length, width) = (road.u_range().1 - road.u_range().0, road.v_range().1 - road.v_range().0);
+    let request = format!("a {filter}");
+    // The road's grid as a draft, the filter's result, the road made from it.
+    budget.admit(&request, (nu * nv) as f64, "grid values", 12.0)?;
     match filter {
         Filter::Gauss(sigma) => {
             if !(sigma > 0.0 && sigma.is_finite()) {
-                return Err(Error::Request(format!("Gaussian sigma {sigma} must be a positive number")));
+                return Err(Error::Request(format!("Gaussian sigma {} m must be a positive number", Num(sigma))));
             }
-            gauss(&mut d.z, nu, &d.v, d.u_inc, sigma);
+            if 3.0 * sigma > length.max(width) {
+                return Err(Error::Request(format!(
+                    "a Gaussian of sigma {} m reaches {} m each way, beyond the road ({length} m long, {width} m wide)",
+                    Num(sigma),
+                    Num(3.0 * sigma)
+                )));
+            }
         }
         Filter::Median(n) => {
             if n == 0 || n.is_multiple_of(2) {
                 return Err(Error::Request(format!("median window {n} must be an odd number of nodes")));
             }
-            d.z = median(&d.z, nu, nv, n / 2);
+            if n / 2 >= nu.max(nv) {
+                return Err(Error::Request(format!(
+                    "a median of {n} x {n} nodes is wider than the road ({nu} x {nv} nodes) both ways"
+                )));
+            }
         }
+        _ => {}
+    }
+    let mut d = Draft::of(road);
+    match filter {
+        Filter::Gauss(sigma) => gauss(&mut d.z, nu, &d.v, d.u_inc, sigma)?,
+        Filter::Median(n) => d.z = median(&d.z, nu, nv, n / 2)?,
         Filter::Limit(lo, hi) => {
             if !(lo <= hi) {
-                return Err(Error::Request(format!("limits {lo}:{hi} must be two numbers, the lower first")));
+                return Err(Error::Request(format!(
+                    "limits {}:{} must be two numbers, the lower first",
+                    Num(lo),
+                    Num(hi)
+                )));
             }
             for z in d.z.iter_mut().filter(|z| !z.is_nan()) {
                 *z = z.clamp(lo as f32, hi as f32);
@@ -67,9 +93,9 @@ pub fn filter(road: &Road, filter: Filter) -> Result<Road> {
     d.into_road(&format!("filtered by opencrg {}: {filter}", env!("CARGO_PKG_VERSION")))
 }
 
-/// Normalised Gaussian weights at offsets -r..=r of spacing `step`.
-fn kernel(sigma: f64, step: f64) -> Vec<f64> {
-    let r = (3.0 * sigma / step).ceil() as usize;
+/// Normalised Gaussian weights at offsets -r..=r of spacing `step`, r at most `reach`.
+fn kernel(sigma: f64, step: f64, reach: usize) -> Vec<f64> {
+    let r = ((3.0 * sigma / step).ceil() as usize).min(reach);
     (0..=2 * r).map(|k| (-((k as f64 - r as f64) * step).powi(2) / (2.0 * sigma * sigma)).exp()).collect()
 }
 
@@ -94,10 +120,10 @@ fn smooth_line(values: &[f32], weight: impl Fn(usize, usize) -> Option<f64>, rea
     }
 }
 
-fn gauss(z: &mut [f32], nu: usize, v: &[f64], u_inc: f64, sigma: f64) {
-    let k = kernel(sigma, u_inc);
+fn gauss(z: &mut [f32], nu: usize, v: &[f64], u_inc: f64, sigma: f64) -> Result<()> {
+    let k = kernel(sigma, u_inc, nu);
     let r = k.len() / 2;
-    let mut out = vec![0.0f32; nu];
+    let mut out = filled(nu, 0.0f32, "a Gaussian's long section")?;
     for long in z.chunks_exact_mut(nu) {
         smooth_line(long, |i, j| Some(k[j + r - i]), r, &mut out);
         long.copy_from_slice(&out);
@@ -120,11 +146,12 @@ fn gauss(z: &mut [f32], nu: usize, v: &[f64], u_inc: f64, sigma: f64) {
             z[iv * nu + iu] = *s;
         }
     }
+    Ok(())
 }
 
-fn median(z: &[f32], nu: usize, nv: usize, r: usize) -> Vec<f32> {
-    let mut out = vec![f32::NAN; z.len()];
-    let mut window = Vec::with_capacity((2 * r + 1).pow(2));
+fn median(z: &[f32], nu: usize, nv: usize, r: usize) -> Result<Vec<f32>> {
+    let mut out = filled(z.len(), f32::NAN, "the median's grid")?;
+    let mut window = Vec::with_capacity((2 * r + 1).min(nu) * (2 * r + 1).min(nv));
     for iv in 0..nv {
         for iu in 0..nu {
             if z[iv * nu + iu].is_nan() {
@@ -140,7 +167,7 @@ fn median(z: &[f32], nu: usize, nv: usize, r: usize) -> Vec<f32> {
             out[iv * nu + iu] = *m;
         }
     }
-    out
+    Ok(out)
 }
 
 /// NaN nodes filled as [`Filter::FillNan`] says.

@@ -2,8 +2,9 @@
 
 use super::draft::{headings_through, slopes_for, Draft};
 use super::path::{chord_walk, Curve};
-use super::resample::positions;
-use crate::error::{Error, Result};
+use super::resample::{cross_sections, position_count, positions};
+use crate::budget::{filled, Budget};
+use crate::error::{Error, Num, Result};
 use crate::header::Header;
 use crate::road::{LoadOptions, Road};
 use crate::settings::{m, NanMode, Settings};
@@ -52,10 +53,12 @@ pub type Surface<'a> = &'a (dyn Fn(f64, f64) -> f64 + Sync);
 /// curve (a cubic spline over the chord length: heading and curvature are
 /// continuous), its cross sections exactly `u_inc` apart along it. With elevations,
 /// the line climbs through them (a slope channel). The grid is `surface` (flat without).
-pub fn generate(line: &Points, layout: Layout, surface: Option<Surface>) -> Result<Road> {
-    let mut d = along(line, layout)?;
+/// Refused: fewer than two points, a width or increment that is not a positive number, a
+/// grid beyond `budget`.
+pub fn generate(line: &Points, layout: Layout, surface: Option<Surface>, budget: &Budget) -> Result<Road> {
+    let mut d = along(line, layout, budget)?;
     let (nu, nv) = (d.nu(), d.nv());
-    d.z = vec![0.0; nu * nv];
+    d.z = filled(nu * nv, 0.0, "the new road's grid")?;
     if let Some(f) = surface {
         for (iv, long) in d.z.chunks_exact_mut(nu).enumerate() {
             for (iu, z) in long.iter_mut().enumerate() {
@@ -73,8 +76,8 @@ pub fn generate(line: &Points, layout: Layout, surface: Option<Surface>) -> Resu
 }
 
 /// A draft along the curve through `line` with the layout's long sections and no grid
-/// values yet.
-pub(crate) fn along(line: &Points, layout: Layout) -> Result<Draft> {
+/// values yet, sized against `budget` before anything is made.
+pub(crate) fn along(line: &Points, layout: Layout, budget: &Budget) -> Result<Draft> {
     let Layout { width, u_inc, v_inc } = layout;
     if line.len() < 2 || line.y.len() != line.len() || line.z.as_ref().is_some_and(|z| z.len() != line.len()) {
         return Err(Error::Request(format!(
@@ -86,16 +89,25 @@ pub(crate) fn along(line: &Points, layout: Layout) -> Result<Draft> {
         return Err(Error::Request(format!("reference line point {} is not a finite x/y", i + 1)));
     }
     if !(width > 0.0 && width.is_finite()) {
-        return Err(Error::Request(format!("width {width} must be a positive number")));
+        return Err(Error::Request(format!("width {} m must be a positive number", Num(width))));
     }
-    if !(u_inc > 0.0 && u_inc.is_finite()) {
-        return Err(Error::Request(format!("u increment {u_inc} must be a positive number")));
-    }
-    let v = positions(-width / 2.0, width / 2.0, v_inc)?;
+    let nv = position_count(-width / 2.0, width / 2.0, v_inc, "v increment")?;
     let curve = Curve::through(&line.x, &line.y, line.z.as_deref())
         .map_err(|i| Error::Request(format!("reference line points {i} and {} coincide", i + 1)))?;
-    let (px, py, pt) = curve.polyline((u_inc / 8.0).min(0.05));
-    let stops = chord_walk(&px, &py, &pt, u_inc);
+    let nu = cross_sections(curve.length, u_inc)?;
+    // The polyline the cross sections are walked along: points `spacing` apart, x, y and
+    // the curve's parameter each.
+    let spacing = (u_inc / 8.0).min(0.05);
+    let request = format!(
+        "a road {} m wide with a u increment of {} m and a v increment of {} m",
+        Num(width),
+        Num(u_inc),
+        Num(v_inc)
+    );
+    budget.admit_road(&request, nu, nv, u_inc / spacing * 24.0)?;
+    let v = positions(-width / 2.0, v_inc, nv as usize)?;
+    let (px, py, pt) = curve.polyline(spacing)?;
+    let stops = chord_walk(&px, &py, &pt, u_inc)?;
     if stops.len() < 2 {
         return Err(Error::Request(format!(
             "the line through the points is {:.3} m long, shorter than one u increment ({u_inc} m)",

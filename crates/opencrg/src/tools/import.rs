@@ -4,6 +4,7 @@
 use super::filter::fill_nan;
 use super::generate::{along, Layout, Points};
 use super::nodes::{at_nodes, Progress};
+use crate::budget::{filled, Budget};
 use crate::contact::ContactPoint;
 use crate::error::{Error, Result};
 use crate::road::Road;
@@ -43,28 +44,48 @@ impl HasPosition for CloudPoint {
     }
 }
 
-/// The road a point cloud (x, y, z) describes along a reference line.
-pub fn import(cloud: &Points, how: &Import, progress: Progress) -> Result<Road> {
+/// The memory a point takes in the triangulation (spade's vertices, edges and faces,
+/// and the copy handed to it), measured on clouds of 10^6 points and rounded up.
+const TRIANGULATED_POINT_BYTES: f64 = 240.0;
+
+/// The road a point cloud (x, y, z) describes along a reference line. Refused: points
+/// without z or fewer than three, a layout as [`generate`](super::generate::generate)
+/// refuses it, a triangulation or grid beyond `budget`, points covering less than half
+/// the grid.
+pub fn import(cloud: &Points, how: &Import, progress: Progress, budget: &Budget) -> Result<Road> {
     let z = cloud.z.as_ref().ok_or_else(|| Error::Request("the points have no z".into()))?;
+    if cloud.y.len() != cloud.len() || z.len() != cloud.len() {
+        return Err(Error::Request(format!(
+            "the points have {} x, {} y and {} z values: one of each per point",
+            cloud.len(),
+            cloud.y.len(),
+            z.len()
+        )));
+    }
     if cloud.len() < 3 {
         return Err(Error::Request(format!("{} point(s): a surface needs at least three", cloud.len())));
     }
+    let request = format!("triangulating {} points", cloud.len());
+    budget.admit(&request, cloud.len() as f64, "triangulated points", TRIANGULATED_POINT_BYTES)?;
     let line = match &how.refline {
         Some(l) => l.clone(),
         None => fitted_line(cloud)?,
     };
     let width = match how.width {
         Some(w) => w,
-        None => reach(cloud, &line, how)?,
+        None => reach(cloud, &line, how, budget)?,
     };
-    let mut d = along(&line, Layout { width, u_inc: how.u_inc, v_inc: how.v_inc })?;
+    let mut d = along(&line, Layout { width, u_inc: how.u_inc, v_inc: how.v_inc }, budget)?;
     if line.z.is_none() {
         // Heights near the grid's values keep single precision fine.
         d.z_start = z.iter().sum::<f64>() / z.len() as f64;
     }
     progress("triangulating", 0, cloud.len() as u64);
-    let vertices: Vec<CloudPoint> =
-        (0..cloud.len()).map(|i| CloudPoint { p: Point2::new(cloud.x[i], cloud.y[i]), z: z[i] }).collect();
+    let mut vertices =
+        filled(cloud.len(), CloudPoint { p: Point2::new(0.0, 0.0), z: 0.0 }, "the points to triangulate")?;
+    for (i, v) in vertices.iter_mut().enumerate() {
+        *v = CloudPoint { p: Point2::new(cloud.x[i], cloud.y[i]), z: z[i] };
+    }
     let tri: DelaunayTriangulation<CloudPoint> = DelaunayTriangulation::bulk_load(vertices)
         .map_err(|e| Error::Request(format!("the points cannot be triangulated: {e}")))?;
     progress("triangulating", cloud.len() as u64, cloud.len() as u64);
@@ -82,7 +103,7 @@ pub fn import(cloud: &Points, how: &Import, progress: Progress) -> Result<Road> 
             None => f32::NAN,
         },
         &nodes,
-    );
+    )?;
     let covered = d.z.iter().filter(|z| !z.is_nan()).count();
     let share = covered as f64 / d.z.len() as f64;
     if share < 0.5 {
@@ -195,8 +216,8 @@ fn fitted_line(cloud: &Points) -> Result<Points> {
 /// How wide a road the cloud carries around the line: twice the smaller of the reaches
 /// to the right and to the left (each the 99th percentile of the points' |v| on that
 /// side, of at most 200,000 points), down to whole long section increments.
-fn reach(cloud: &Points, line: &Points, how: &Import) -> Result<f64> {
-    let probe = along(line, Layout { width: 2.0 * how.v_inc, u_inc: how.u_inc, v_inc: how.v_inc })?;
+fn reach(cloud: &Points, line: &Points, how: &Import, budget: &Budget) -> Result<f64> {
+    let probe = along(line, Layout { width: 2.0 * how.v_inc, u_inc: how.u_inc, v_inc: how.v_inc }, budget)?;
     let frame = Arc::new(probe.frame(-1.0, 1.0)?);
     let mut cp = ContactPoint::new(frame);
     let step = (cloud.len() / 200_000).max(1);

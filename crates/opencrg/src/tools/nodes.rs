@@ -2,7 +2,9 @@
 //! x/y comes from the new road's own reference line (as the library places it), the
 //! value from a function of the node.
 
+use crate::budget::filled;
 use crate::contact::ContactPoint;
+use crate::error::Result;
 use crate::road::Road;
 use crate::settings::BorderMode;
 use crate::CpOption;
@@ -24,20 +26,21 @@ pub type Progress<'a> = &'a (dyn Fn(&str, u64, u64) + Sync);
 
 /// `value(state, node)` at every node of `frame`'s cross sections and of the long
 /// sections at `v` (not necessarily the frame's own), long section by long section
-/// (`[iv * nu + iu]`). Each thread makes its own state with `state()`.
+/// (`[iv * nu + iu]`). Each thread makes its own state with `state()`. Refused: memory
+/// the system does not give.
 pub(crate) fn at_nodes<S>(
     frame: &Arc<Road>,
     v: &[f64],
     state: impl Fn() -> S + Sync,
     value: impl Fn(&mut S, Node) -> f32 + Sync,
     progress: Progress,
-) -> Vec<f32> {
+) -> Result<Vec<f32>> {
     let line = frame.reference_line();
     let (nu, nv) = (line.n, v.len());
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(nu.div_ceil(64)).max(1);
     let rows_per = nu.div_ceil(threads);
     // Cross section by cross section first (each thread fills whole rows), turned after.
-    let mut by_row = vec![f32::NAN; nu * nv];
+    let mut by_row = filled(nu * nv, f32::NAN, "the values at the new road's nodes")?;
     let done = AtomicUsize::new(0);
     std::thread::scope(|scope| {
         for (chunk, rows) in by_row.chunks_mut(rows_per * nv).enumerate() {
@@ -60,13 +63,13 @@ pub(crate) fn at_nodes<S>(
         }
     });
     progress("evaluating", nu as u64, nu as u64);
-    let mut out = vec![0.0f32; nu * nv];
+    let mut out = filled(nu * nv, 0.0f32, "the new road's grid")?;
     for (iu, row) in by_row.chunks_exact(nv).enumerate() {
         for (iv, &z) in row.iter().enumerate() {
             out[iv * nu + iu] = z;
         }
     }
-    out
+    Ok(out)
 }
 
 /// A contact point that reads the surface of `road` at x/y, or says there is none: the

@@ -3,6 +3,9 @@
 //! and the walk along a polyline that puts points exactly one step apart, as a
 //! reference line's heading channel places its cross sections.
 
+use crate::budget::{filled, refused};
+use crate::error::Result;
+
 /// A point found by [`chord_walk`]: x, y and the polyline's parameter there.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Stop {
@@ -14,10 +17,12 @@ pub(crate) struct Stop {
 
 /// Points along the polyline (`x`, `y`, parameter `t` at its vertices) starting at its
 /// first vertex, each exactly `step` (straight-line distance) after the one before,
-/// as far as the polyline reaches.
-pub(crate) fn chord_walk(x: &[f64], y: &[f64], t: &[f64], step: f64) -> Vec<Stop> {
+/// as far as the polyline reaches. Refused: memory the system does not give.
+pub(crate) fn chord_walk(x: &[f64], y: &[f64], t: &[f64], step: f64) -> Result<Vec<Stop>> {
     let n = x.len();
-    let mut out = Vec::with_capacity(1 + (t[n - 1] - t[0]).abs().div_euclid(step) as usize);
+    let mut out = Vec::new();
+    let expected = 1 + (t[n - 1] - t[0]).abs().div_euclid(step) as usize;
+    out.try_reserve_exact(expected).map_err(|_| refused(expected, "the reference line's cross sections"))?;
     let (mut cx, mut cy) = (x[0], y[0]);
     out.push(Stop { x: cx, y: cy, t: t[0] });
     let mut seg = 0;
@@ -45,7 +50,7 @@ pub(crate) fn chord_walk(x: &[f64], y: &[f64], t: &[f64], step: f64) -> Vec<Stop
         out.push(Stop { x: cx, y: cy, t: t[seg] + s * (t[seg + 1] - t[seg]) });
         from = s;
     }
-    out
+    Ok(out)
 }
 
 /// A cubic spline through `(t[i], f[i])` (t increasing), with parabolic run-out at both
@@ -143,12 +148,17 @@ impl Curve {
         self.z.as_ref().map(|z| z.at(t))
     }
 
-    /// The curve as a polyline with points at most `spacing` apart in t.
-    pub fn polyline(&self, spacing: f64) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+    /// The curve as a polyline with points at most `spacing` apart in t. Refused: memory
+    /// the system does not give.
+    pub fn polyline(&self, spacing: f64) -> Result<(Vec<f64>, Vec<f64>, Vec<f64>)> {
         let n = (self.length / spacing).ceil().max(1.0) as usize;
-        let t: Vec<f64> = (0..=n).map(|i| self.length * i as f64 / n as f64).collect();
-        let (x, y) = t.iter().map(|&s| self.at(s)).unzip();
-        (x, y, t)
+        let what = "the polyline through the points";
+        let (mut x, mut y, mut t) = (filled(n + 1, 0.0, what)?, filled(n + 1, 0.0, what)?, filled(n + 1, 0.0, what)?);
+        for i in 0..=n {
+            t[i] = self.length * i as f64 / n as f64;
+            (x[i], y[i]) = self.at(t[i]);
+        }
+        Ok((x, y, t))
     }
 }
 
@@ -163,7 +173,7 @@ mod tests {
         let a: Vec<f64> = (0..=k).map(|i| std::f64::consts::FRAC_PI_2 * i as f64 / k as f64).collect();
         let x: Vec<f64> = a.iter().map(|a| 10.0 * a.cos()).collect();
         let y: Vec<f64> = a.iter().map(|a| 10.0 * a.sin()).collect();
-        let stops = chord_walk(&x, &y, &a, 0.5);
+        let stops = chord_walk(&x, &y, &a, 0.5).unwrap();
         assert!(stops.len() >= 31, "{}", stops.len());
         for w in stops.windows(2) {
             let d = (w[1].x - w[0].x).hypot(w[1].y - w[0].y);

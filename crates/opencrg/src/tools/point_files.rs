@@ -8,18 +8,35 @@ use std::path::Path;
 /// The points of a file, by its extension: `.las`/`.laz`, `.ply`, anything else a
 /// text table. Text tables give z when they have a third column (or one named z).
 pub fn read_points(path: &Path) -> Result<Points> {
-    let ext = path.extension().map(|e| e.to_string_lossy().to_ascii_lowercase()).unwrap_or_default();
-    match ext.as_str() {
-        "las" | "laz" => read_las(path),
-        _ => {
-            let bytes = std::fs::read(path).map_err(|source| Error::Io { path: path.to_path_buf(), source })?;
-            if ext == "ply" || bytes.starts_with(b"ply\n") || bytes.starts_with(b"ply\r\n") {
-                read_ply(path, &bytes)
-            } else {
-                read_table(path, &bytes)
-            }
-        }
+    if is_las(path) {
+        let reader = las::Reader::from_path(path).map_err(las_error(path))?;
+        let size = std::fs::metadata(path).map_or(0, |m| m.len());
+        return read_las(reader, path, size);
     }
+    let bytes = std::fs::read(path).map_err(|source| Error::Io { path: path.to_path_buf(), source })?;
+    parse_points(&bytes, path)
+}
+
+/// The points of `bytes`, read as [`read_points`] reads a file called `name`.
+pub fn parse_points(bytes: &[u8], name: &Path) -> Result<Points> {
+    let ext = name.extension().map(|e| e.to_string_lossy().to_ascii_lowercase()).unwrap_or_default();
+    if is_las(name) {
+        let reader = las::Reader::new(std::io::Cursor::new(bytes.to_vec())).map_err(las_error(name))?;
+        read_las(reader, name, bytes.len() as u64)
+    } else if ext == "ply" || bytes.starts_with(b"ply\n") || bytes.starts_with(b"ply\r\n") {
+        read_ply(name, bytes)
+    } else {
+        read_table(name, bytes)
+    }
+}
+
+/// Whether the name says LAS or LAZ.
+fn is_las(path: &Path) -> bool {
+    path.extension().is_some_and(|e| e.eq_ignore_ascii_case("las") || e.eq_ignore_ascii_case("laz"))
+}
+
+fn las_error(path: &Path) -> impl Fn(las::Error) -> Error + '_ {
+    move |e| bad(path, 0, "LAS", e.to_string())
 }
 
 fn bad(path: &Path, line: usize, field: &str, message: impl Into<String>) -> Error {
@@ -176,12 +193,15 @@ fn read_ply(path: &Path, bytes: &[u8]) -> Result<Points> {
     let (Some(ix), Some(iy), iz) = (find("x"), find("y"), find("z")) else {
         return Err(bad(path, 0, "vertex", "no x and y properties"));
     };
-    let mut points = Points { x: Vec::with_capacity(*n), y: Vec::with_capacity(*n), z: None };
-    let mut z = Vec::with_capacity(*n);
+    // Room for what the file can hold at most (a vertex takes a byte at least), not for
+    // what its header claims.
+    let room = (*n).min(bytes.len());
+    let mut points = Points { x: Vec::with_capacity(room), y: Vec::with_capacity(room), z: None };
+    let mut z = Vec::with_capacity(room);
     match little {
         None => {
             let text = String::from_utf8_lossy(&bytes[body_start..]);
-            let skip: usize = elements[..at].iter().map(|e| e.count).sum();
+            let skip = elements[..at].iter().fold(0usize, |sum, e| sum.saturating_add(e.count));
             let mut lines = text.lines().skip(skip);
             for i in 0..*n {
                 let line = lines.next().ok_or_else(|| bad(path, 0, "vertex", format!("{i} of {n} vertices found")))?;
@@ -203,8 +223,14 @@ fn read_ply(path: &Path, bytes: &[u8]) -> Result<Points> {
         }
         Some(little) => {
             let size = |e: &PlyElement| -> usize { e.props.iter().map(|p| ply_size(&p.0).unwrap_or(0)).sum() };
-            let start = body_start + elements[..at].iter().map(|e| e.count * size(e)).sum::<usize>();
+            let too_big = || bad(path, 0, "element", "the header's element counts exceed any file");
+            let before = elements[..at]
+                .iter()
+                .try_fold(0usize, |sum, e| e.count.checked_mul(size(e)).and_then(|b| sum.checked_add(b)))
+                .ok_or_else(too_big)?;
+            let start = body_start.checked_add(before).ok_or_else(too_big)?;
             let stride = size(&elements[at]);
+            let end = n.checked_mul(stride).and_then(|b| b.checked_add(start)).ok_or_else(too_big)?;
             let offsets: Vec<usize> = props
                 .iter()
                 .scan(0, |o, p| {
@@ -213,9 +239,8 @@ fn read_ply(path: &Path, bytes: &[u8]) -> Result<Points> {
                     Some(here)
                 })
                 .collect();
-            let body = bytes
-                .get(start..start + n * stride)
-                .ok_or_else(|| bad(path, 0, "vertex", "the file ends before its vertices do"))?;
+            let body =
+                bytes.get(start..end).ok_or_else(|| bad(path, 0, "vertex", "the file ends before its vertices do"))?;
             for rec in body.chunks_exact(stride) {
                 let get = |c: usize| ply_value(&props[c].0, &rec[offsets[c]..], little);
                 points.x.push(get(ix));
@@ -232,14 +257,16 @@ fn read_ply(path: &Path, bytes: &[u8]) -> Result<Points> {
     Ok(points)
 }
 
-fn read_las(path: &Path) -> Result<Points> {
-    let err = |e: las::Error| bad(path, 0, "LAS", e.to_string());
-    let mut reader = las::Reader::from_path(path).map_err(err)?;
-    let n = reader.header().number_of_points() as usize;
+/// The points of a LAS/LAZ reader over `size` bytes.
+fn read_las(mut reader: las::Reader, path: &Path, size: u64) -> Result<Points> {
+    let err = las_error(path);
+    // Room for what the file can hold at most (a point takes a byte at least, even
+    // compressed), not for what its header claims.
+    let n = reader.header().number_of_points().min(size) as usize;
     let mut points = Points { x: Vec::with_capacity(n), y: Vec::with_capacity(n), z: None };
     let mut z = Vec::with_capacity(n);
     let mut chunk = las::PointDataBuilder::new().for_header(reader.header()).build();
-    while reader.fill_points(1 << 20, &mut chunk).map_err(err)? > 0 {
+    while reader.fill_points(1 << 20, &mut chunk).map_err(&err)? > 0 {
         points.x.extend(chunk.x());
         points.y.extend(chunk.y());
         z.extend(chunk.z());

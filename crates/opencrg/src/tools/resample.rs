@@ -3,49 +3,88 @@
 use super::draft::{headings_through, slopes_for, Draft};
 use super::nodes::{at_nodes, Progress, SurfaceProbe};
 use super::path::chord_walk;
-use crate::error::{Error, Result};
+use crate::budget::{filled, Budget};
+use crate::error::{Error, Num, Result};
 use crate::road::Road;
 use std::sync::Arc;
 
 /// `road`'s surface on a grid of cross sections `u_inc` apart and long sections `v_inc`
 /// apart (each the road's own when `None`). The new reference line's points lie on the
 /// old one, exactly `u_inc` apart; each node's z is the old surface at the node's x/y.
-pub fn resample(road: &Arc<Road>, u_inc: Option<f64>, v_inc: Option<f64>) -> Result<Road> {
+/// Refused: an increment that is not a positive number, a grid beyond `budget`.
+pub fn resample(road: &Arc<Road>, u_inc: Option<f64>, v_inc: Option<f64>, budget: &Budget) -> Result<Road> {
     let du = u_inc.unwrap_or(road.increments().0);
     let (right, left) = road.v_range();
+    let request = format!(
+        "resampling with a u increment of {} m and {}",
+        Num(du),
+        v_inc.map_or("the road's long sections".to_string(), |dv| format!("a v increment of {} m", Num(dv)))
+    );
     let (v, regular) = match v_inc {
         None => (road.grid().v.clone(), road.grid().layout == crate::grid::VLayout::Indexed),
-        Some(dv) => (positions(right, left, dv)?, true),
+        Some(dv) => {
+            let n = position_count(right, left, dv, "v increment")?;
+            let (u_first, u_last) = road.u_range();
+            budget.admit_road(&request, cross_sections(u_last - u_first, du)?, n, 0.0)?;
+            (positions(right, dv, n as usize)?, true)
+        }
     };
     let what = format!("resampled by opencrg {}: u increment {du} m, v increment {}", env!("CARGO_PKG_VERSION"), {
         v_inc.map_or("as before".to_string(), |dv| format!("{dv} m"))
     });
-    onto(road, du, v, regular, &|_, _, _| {})?.into_road(&what)
+    onto(road, du, v, regular, &request, budget, &|_, _, _| {})?.into_road(&what)
 }
 
-/// Evenly spaced positions from `first` to at most `last`.
-pub(crate) fn positions(first: f64, last: f64, inc: f64) -> Result<Vec<f64>> {
-    if !(inc > 0.0 && inc.is_finite()) {
-        return Err(Error::Request(format!("increment {inc} must be a positive number")));
+/// How many cross sections `du` apart a line `length` long holds (as a float: any count).
+pub(crate) fn cross_sections(length: f64, du: f64) -> Result<f64> {
+    if !(du > 0.0 && du.is_finite()) {
+        return Err(Error::Request(format!("u increment {} m must be a positive number", Num(du))));
     }
-    let n = ((last - first) / inc + 1e-9).floor() as usize + 1;
-    if n < 2 {
+    Ok((length / du + 1e-9).floor() + 1.0)
+}
+
+/// How many positions `inc` apart fit from `first` to `last` (as a float: any count,
+/// sized before anything is made); refused: an increment that is not a positive number,
+/// fewer than two positions.
+pub(crate) fn position_count(first: f64, last: f64, inc: f64, what: &str) -> Result<f64> {
+    if !(inc > 0.0 && inc.is_finite()) {
+        return Err(Error::Request(format!("{what} {} m must be a positive number", Num(inc))));
+    }
+    let n = ((last - first) / inc + 1e-9).floor() + 1.0;
+    if !(n >= 2.0) {
         return Err(Error::Request(format!(
-            "an increment of {inc} m leaves fewer than two nodes in {first} to {last} m"
+            "a {what} of {} m leaves fewer than two nodes in {first} to {last} m",
+            Num(inc)
         )));
     }
-    Ok((0..n).map(|i| first + i as f64 * inc).collect())
+    Ok(n)
 }
 
-/// `road`'s surface as a draft with cross sections `du` apart and long sections at `v`.
-pub(crate) fn onto(road: &Arc<Road>, du: f64, v: Vec<f64>, regular: bool, progress: Progress) -> Result<Draft> {
-    if !(du > 0.0 && du.is_finite()) {
-        return Err(Error::Request(format!("u increment {du} must be a positive number")));
+/// `n` positions `inc` apart from `first`. Refused: memory the system does not give.
+pub(crate) fn positions(first: f64, inc: f64, n: usize) -> Result<Vec<f64>> {
+    let mut p = filled(n, first, "the long sections")?;
+    for (i, x) in p.iter_mut().enumerate() {
+        *x += i as f64 * inc;
     }
-    let old = Draft::line_of(road);
+    Ok(p)
+}
+
+/// `road`'s surface as a draft with cross sections `du` apart and long sections at `v`,
+/// sized against `budget` first (`request` says what was asked, for a refusal).
+pub(crate) fn onto(
+    road: &Arc<Road>,
+    du: f64,
+    v: Vec<f64>,
+    regular: bool,
+    request: &str,
+    budget: &Budget,
+    progress: Progress,
+) -> Result<Draft> {
     let line = road.reference_line();
+    budget.admit_road(&request, cross_sections(line.u_last - line.u_first, du)?, v.len() as f64, 0.0)?;
+    let old = Draft::line_of(road);
     let u_old: Vec<f64> = (0..line.n).map(|i| line.u_at(i)).collect();
-    let stops = chord_walk(&line.x, &line.y, &u_old, du);
+    let stops = chord_walk(&line.x, &line.y, &u_old, du)?;
     if stops.len() < 2 {
         return Err(Error::Request(format!(
             "a u increment of {du} m leaves fewer than two cross sections on a road {} m long",
@@ -88,7 +127,7 @@ pub(crate) fn onto(road: &Arc<Road>, du: f64, v: Vec<f64>, regular: bool, progre
             None => f32::NAN,
         },
         progress,
-    );
+    )?;
     new.z = z;
     new.v = v;
     Ok(new)
