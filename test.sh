@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs every test: formatting, lints and documentation, the Rust tests (unit,
-# integration, header freshness, the opencrg command, doctests incl. the README's), then
+# integration, header freshness, the opencrg command, doctests incl. the README's), a
+# short run of every fuzz target, then
 # through CTest the C tests (also under the sanitizers and valgrind), the header and
 # symbol checks, the CMake consumer project, the conformance suite in both behaviour
 # profiles (.so and .a) and the differential tester; the same C tests and conformance
@@ -15,6 +16,8 @@ cargo fmt --all --check
 cargo clippy --workspace --all-targets -- -D warnings
 RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps
 cargo test --workspace
+# Every fuzz target for 15 s from its seeds (stable toolchain, under 4 GB of address space).
+fuzz/run.sh 15
 cargo build --release -p opencrg-capi -p opencrg-cli
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"

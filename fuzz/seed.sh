@@ -3,6 +3,5 @@
 # generated roads, whole (header target) and as data sections (reader targets).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-mkdir -p fuzz/corpus/{header,text_reader,binary_reader,evaluation}
 cargo run -q --release -p opencrg --example make_fuzz_seeds -- fuzz/corpus
 ls fuzz/corpus/* | head -50

@@ -2,7 +2,8 @@
 #![no_main]
 use libfuzzer_sys::fuzz_target;
 
-const HEADER: &str = "$ROAD_CRG\nREFERENCE_LINE_INCREMENT = 0.5\nLONG_SECTION_V_RIGHT = -1\nLONG_SECTION_V_LEFT = 1\n$\n\
+const HEADER: &str =
+    "$ROAD_CRG\nREFERENCE_LINE_INCREMENT = 0.5\nLONG_SECTION_V_RIGHT = -1\nLONG_SECTION_V_LEFT = 1\n$\n\
 $KD_Definition\n#:LRFI\nD:reference line phi,rad\nD:reference line slope,m/m\nD:long section at v = -1.0,m\n\
 D:long section at v = 0.25,m\nD:long section at v = 1.0,m\n$\n$$$$$$$$\n";
 

@@ -124,3 +124,21 @@ fn point_files_claiming_more_than_they_hold_are_refused() {
     let bad = tools::parse_points(b"LASF not really", std::path::Path::new("bad.las")).unwrap_err().to_string();
     assert!(bad.contains("bad.las"), "{bad}");
 }
+
+/// Found by the `tools` fuzz target: a line through points far apart (the spline through
+/// them leaves the finite numbers) reached the walk along its polyline with NaN.
+#[test]
+fn lines_through_points_beyond_the_finite_are_refused() {
+    let layout = Layout { width: 3.0, u_inc: 0.5, v_inc: 0.5 };
+    for (x, y) in [
+        (vec![0.0, 1e300, -1e300, 5.0], vec![0.0, 0.5, 1e300, 0.0]),
+        (vec![0.0, 1e200, 3.0, 1e-300], vec![1e250, -1e250, 0.0, 1.0]),
+        (vec![0.0, 1.0, 1.0 + 1e-300, 2.0], vec![0.0, 0.0, 0.0, 0.0]),
+        (vec![-3.380843063978214e221; 4], vec![2.37, 2.55, -0.2, 0.5]),
+    ] {
+        let result = tools::generate(&Points { x, y, z: None }, layout, None, &Budget::with_bytes(8 << 20));
+        if let Err(e) = result {
+            assert!(matches!(e, Error::Request(_)), "{e}");
+        }
+    }
+}

@@ -75,6 +75,11 @@ pub fn generate(line: &Points, layout: Layout, surface: Option<Surface>, budget:
     d.into_road(&what)
 }
 
+/// The largest x or y of a reference line's points taken (m): beyond the earth's
+/// projected coordinates by far, small enough that squared distances stay exact to well
+/// below a millimetre's square.
+const MAX_COORDINATE: f64 = 1e9;
+
 /// A draft along the curve through `line` with the layout's long sections and no grid
 /// values yet, sized against `budget` before anything is made.
 pub(crate) fn along(line: &Points, layout: Layout, budget: &Budget) -> Result<Draft> {
@@ -85,8 +90,16 @@ pub(crate) fn along(line: &Points, layout: Layout, budget: &Budget) -> Result<Dr
             line.len()
         )));
     }
-    if let Some(i) = (0..line.len()).find(|&i| !(line.x[i].is_finite() && line.y[i].is_finite())) {
-        return Err(Error::Request(format!("reference line point {} is not a finite x/y", i + 1)));
+    if let Some(i) =
+        (0..line.len()).find(|&i| !(line.x[i].abs() <= MAX_COORDINATE && line.y[i].abs() <= MAX_COORDINATE))
+    {
+        return Err(Error::Request(format!(
+            "reference line point {} (x {}, y {}) is not within {} m of the origin",
+            i + 1,
+            Num(line.x[i]),
+            Num(line.y[i]),
+            Num(MAX_COORDINATE)
+        )));
     }
     if !(width > 0.0 && width.is_finite()) {
         return Err(Error::Request(format!("width {} m must be a positive number", Num(width))));

@@ -44,7 +44,13 @@ pub(crate) fn chord_walk(x: &[f64], y: &[f64], t: &[f64], step: f64) -> Result<V
         let a = dx * dx + dy * dy;
         let b = 2.0 * (dx * ex + dy * ey);
         let c = ex * ex + ey * ey - r2;
-        let s = ((-b + (b * b - 4.0 * a * c).max(0.0).sqrt()) / (2.0 * a)).clamp(from, 1.0);
+        let s = (-b + (b * b - 4.0 * a * c).max(0.0).sqrt()) / (2.0 * a);
+        if !s.is_finite() {
+            // Coordinates so far apart that their squares leave the finite numbers: the
+            // walk ends here, and the caller finds the line too short or refuses it.
+            break;
+        }
+        let s = s.clamp(from, 1.0);
         cx = ax + s * dx;
         cy = ay + s * dy;
         out.push(Stop { x: cx, y: cy, t: t[seg] + s * (t[seg + 1] - t[seg]) });

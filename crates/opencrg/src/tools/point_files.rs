@@ -266,7 +266,9 @@ fn read_las(mut reader: las::Reader, path: &Path, size: u64) -> Result<Points> {
     let mut points = Points { x: Vec::with_capacity(n), y: Vec::with_capacity(n), z: None };
     let mut z = Vec::with_capacity(n);
     let mut chunk = las::PointDataBuilder::new().for_header(reader.header()).build();
-    while reader.fill_points(1 << 20, &mut chunk).map_err(&err)? > 0 {
+    // Chunks of 16 MB whatever the record length the header claims (up to 64 kB a point).
+    let per_chunk = ((16u64 << 20) / u64::from(reader.header().point_format().len()).max(1)).max(1);
+    while reader.fill_points(per_chunk, &mut chunk).map_err(&err)? > 0 {
         points.x.extend(chunk.x());
         points.y.extend(chunk.y());
         z.extend(chunk.z());
