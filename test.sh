@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs every test: formatting, lints and documentation, the Rust tests (unit,
 # integration, header freshness, the opencrg command, doctests incl. the README's), a
-# short run of every fuzz target, then
+# short run of every fuzz target, the OpenDRIVE geometry against libOpenDRIVE, then
 # through CTest the C tests (also under the sanitizers and valgrind), the header and
 # symbol checks, the CMake consumer project, the conformance suite in both behaviour
 # profiles (.so and .a) and the differential tester; the same C tests and conformance
@@ -18,6 +18,13 @@ RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps
 cargo test --workspace
 # Every fuzz target for 15 s from its seeds (stable toolchain, under 4 GB of address space).
 fuzz/run.sh 15
+# OpenDRIVE geometry: every road of ../shared/opendrive against libOpenDRIVE, built
+# outside the project by ../shared/oracles/build-libopendrive.sh.
+../shared/oracles/build-libopendrive.sh "$PWD/target/libopendrive" >/dev/null
+g++ -O2 -std=c++17 -I target/libopendrive/include crates/opencrg-odr/tests/oracle/libopendrive_answers.cpp \
+    -L target/libopendrive/lib -lOpenDrive -lpugixml -o target/libopendrive/answers
+OPENCRG_ODR_ORACLE="$PWD/target/libopendrive/answers" \
+    cargo test --release -p opencrg-odr --test libopendrive -- --include-ignored --nocapture
 cargo build --release -p opencrg-capi -p opencrg-cli
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"

@@ -1,0 +1,31 @@
+//! OpenDRIVE maps with OpenCRG surfaces.
+//!
+//! [`Map::load`] reads an `.xodr` file (OpenDRIVE 1.4 to 1.9): the roads' reference lines
+//! (line, arc, spiral, poly3, paramPoly3), elevation, superelevation, lateral shape, lane
+//! offset, lane sections with widths, borders, heights and materials, junctions, and the
+//! `<surface><CRG>` records that lay OpenCRG files on roads and junctions. Everything is
+//! computed in double precision: [`Road::reference`] gives the reference line at s,
+//! [`Road::surface_point`] the road's surface at (s, t).
+//!
+//! ```no_run
+//! let map = opencrg_odr::Map::load("town.xodr")?;
+//! let road = map.road("12").unwrap();
+//! let [x, y, z] = road.surface_point(25.0, -1.75);
+//! # Ok::<(), opencrg::Error>(())
+//! ```
+#![warn(missing_docs)]
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+mod geometry;
+mod lanes;
+mod map;
+mod profile;
+mod quadrature;
+mod read;
+mod surface;
+
+pub use geometry::{Geometry, Pose, Shape};
+pub use lanes::{Height, Lane, LaneSection, LaneSpan, Lanes, Material};
+pub use map::{CrgMode, CrgOrientation, CrgPurpose, CrgRecord, Header, Junction, Map, Road, ShapeGroup};
+pub use profile::{Cubic, Profile};
+pub use surface::RefPoint;

@@ -1,0 +1,122 @@
+//! Road coordinates to world: the reference line in three dimensions, and the point of
+//! the road's surface at (s, t).
+//!
+//! The cross section at s is the plane through the reference line point turned by the
+//! superelevation about the horizontal tangent (the heading's direction): t runs along
+//! `e_t = (-cos r sin h, cos r cos h, sin r)`, heights above the cross section along
+//! `e_h = (sin r sin h, -sin r cos h, cos r)`, with h the heading and r the
+//! superelevation. A point at t thus lies `t cos r` from the reference line on the ground.
+//! The lateral shape and the lanes' heights lift the surface along `e_h`.
+
+use crate::geometry::Geometry;
+use crate::lanes::LaneSpan;
+use crate::map::Road;
+
+/// A point of a road's reference line.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RefPoint {
+    /// x (m).
+    pub x: f64,
+    /// y (m).
+    pub y: f64,
+    /// z: the elevation (m).
+    pub z: f64,
+    /// Heading (rad).
+    pub hdg: f64,
+    /// The elevation's slope dz/ds.
+    pub slope: f64,
+    /// The superelevation (rad).
+    pub roll: f64,
+}
+
+impl RefPoint {
+    /// The unit vector along t.
+    pub fn e_t(&self) -> [f64; 3] {
+        let (sh, ch) = self.hdg.sin_cos();
+        let (sr, cr) = self.roll.sin_cos();
+        [-cr * sh, cr * ch, sr]
+    }
+
+    /// The unit vector of heights above the cross section.
+    pub fn e_h(&self) -> [f64; 3] {
+        let (sh, ch) = self.hdg.sin_cos();
+        let (sr, cr) = self.roll.sin_cos();
+        [sr * sh, -sr * ch, cr]
+    }
+
+    /// The point `t` along the cross section and `h` above it.
+    pub fn at(&self, t: f64, h: f64) -> [f64; 3] {
+        let (et, eh) = (self.e_t(), self.e_h());
+        [self.x + t * et[0] + h * eh[0], self.y + t * et[1] + h * eh[1], self.z + t * et[2] + h * eh[2]]
+    }
+}
+
+impl Road {
+    /// The reference line record holding at `s` (before the first, the first).
+    pub fn geometry_at(&self, s: f64) -> Option<&Geometry> {
+        let after = self.plan.partition_point(|g| g.s <= s);
+        self.plan.get(after.saturating_sub(1))
+    }
+
+    /// The reference line at `s`.
+    pub fn reference(&self, s: f64) -> RefPoint {
+        let pose = self.geometry_at(s).map(|g| g.pose(s - g.s));
+        let (x, y, hdg) = pose.map_or((f64::NAN, f64::NAN, f64::NAN), |p| (p.x, p.y, p.hdg));
+        RefPoint {
+            x,
+            y,
+            z: self.elevation.at(s),
+            hdg,
+            slope: self.elevation.slope_at(s),
+            roll: self.superelevation.at(s),
+        }
+    }
+
+    /// The lane at (s, t) with its borders.
+    pub fn lane_at(&self, s: f64, t: f64) -> Option<LaneSpan<'_>> {
+        let (section, ds) = self.lanes.section_at(s)?;
+        section.lane_at(ds, t, self.lanes.offset.at(s))
+    }
+
+    /// The lateral shape's height at (s, t): each group's polynomials along t, linear
+    /// between the groups before and after s, the last group's beyond it.
+    pub fn shape_height(&self, s: f64, t: f64) -> f64 {
+        let at_group = |g: &crate::map::ShapeGroup| {
+            let after = g.along_t.partition_point(|c| c.s <= t);
+            g.along_t.get(after.saturating_sub(1)).map_or(0.0, |c| c.value(t - c.s))
+        };
+        let after = self.shape.partition_point(|g| g.s <= s);
+        match (after.checked_sub(1).map(|i| &self.shape[i]), self.shape.get(after)) {
+            (Some(a), Some(b)) if b.s > a.s => {
+                let w = (s - a.s) / (b.s - a.s);
+                at_group(a) * (1.0 - w) + at_group(b) * w
+            }
+            (Some(a), _) => at_group(a),
+            (None, Some(b)) => at_group(b),
+            (None, None) => 0.0,
+        }
+    }
+
+    /// The lane's height at (s, t): its inner and outer heights, linear between its
+    /// borders (0 outside the lanes).
+    pub fn lane_height(&self, s: f64, t: f64) -> f64 {
+        let Some((section, ds)) = self.lanes.section_at(s) else { return 0.0 };
+        let Some(span) = section.lane_at(ds, t, self.lanes.offset.at(s)) else { return 0.0 };
+        let (inner, outer) = span.lane.height_at(ds);
+        if inner == outer || span.outer == span.inner {
+            return inner;
+        }
+        inner + (outer - inner) * (t - span.inner) / (span.outer - span.inner)
+    }
+
+    /// The height of the surface above the cross section at (s, t): lateral shape and
+    /// lane height.
+    pub fn height_above_section(&self, s: f64, t: f64) -> f64 {
+        self.shape_height(s, t) + self.lane_height(s, t)
+    }
+
+    /// The world point of the road's surface at (s, t).
+    pub fn surface_point(&self, s: f64, t: f64) -> [f64; 3] {
+        self.reference(s).at(t, self.height_above_section(s, t))
+    }
+}
