@@ -16,6 +16,8 @@
 //! opencrg generate OUT --refline LINE.csv --width W --u-inc DU --v-inc DV [--surface F]
 //! opencrg import CLOUD OUT [--refline LINE.csv] [--width W] --u-inc DU --v-inc DV
 //! opencrg compare A B [--tolerance T]
+//! opencrg odr info MAP [--json]                  opencrg odr check MAP
+//! opencrg odr eval MAP < points
 //! ```
 //!
 //! Bad input gives one line on stderr and exit status 2; a road that fails its checks
@@ -27,6 +29,7 @@ mod expr;
 mod geojson;
 mod info;
 mod make;
+mod odr;
 mod render;
 mod roughness;
 mod view;
@@ -155,6 +158,9 @@ enum Command {
     },
     #[command(flatten)]
     Make(make::MakeCommand),
+    /// OpenDRIVE maps with CRG surfaces: info, check, eval.
+    #[command(subcommand)]
+    Odr(odr::OdrCommand),
 }
 
 /// The data formats, named as in files and the specification.
@@ -462,6 +468,7 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
             }
         }
         Command::Make(command) => return make::run(command, &budget),
+        Command::Odr(command) => return odr::run(command),
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -37,6 +37,10 @@ pub struct Header {
     /// Evaluation finds v cells by index only then: the reference library forgets that
     /// a referenced file numbered them, and looks numbered sections up by position.
     pub top_file_numbers_sections: bool,
+    /// Whether the file (or a file it references) has a `$ROAD_CRG_MODS` section: without,
+    /// `modifiers` are the reference library's defaults, which users that lay the road
+    /// in a frame of their own (OpenDRIVE) leave out.
+    pub modifiers_given: bool,
 }
 
 impl Header {
@@ -58,6 +62,7 @@ impl Header {
             warn_msgs: None,
             warnings: Vec::new(),
             top_file_numbers_sections: false,
+            modifiers_given: false,
         }
     }
 }

@@ -248,6 +248,7 @@ impl Loader {
             }
             Section::Modifiers if level == 0 || self.modifier_level.is_none() => {
                 self.header.modifiers.clear();
+                self.header.modifiers_given = true;
                 self.modifier_level = Some(level);
             }
             _ => {}

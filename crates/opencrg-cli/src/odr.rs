@@ -1,0 +1,192 @@
+//! `opencrg odr`: OpenDRIVE maps with CRG surfaces. `info` says what a map holds, `check`
+//! applies the rules of its CRG records and roads, `eval` answers height, friction, road,
+//! s and t at world points read from stdin.
+
+use clap::Subcommand;
+use opencrg_odr::{CrgMode, Map, Surface};
+use std::io::{BufRead, Write};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::sync::Arc;
+
+/// The commands on OpenDRIVE maps.
+#[derive(Subcommand)]
+pub enum OdrCommand {
+    /// What the map holds: roads, their length, junctions, CRG records per road, extent.
+    Info {
+        /// The OpenDRIVE map (.xodr).
+        map: PathBuf,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// The rules of the CRG records and the roads: exit status 0 when clean, 1 with one line per finding.
+    Check {
+        /// The OpenDRIVE map (.xodr).
+        map: PathBuf,
+    },
+    /// Read `x y` lines from stdin, print `z friction road s t` (`nan nan - nan nan` off every road).
+    Eval {
+        /// The OpenDRIVE map (.xodr).
+        map: PathBuf,
+    },
+}
+
+fn load(path: &Path) -> Result<Map, String> {
+    Map::load(path).map_err(|e| e.to_string())
+}
+
+fn mode_name(m: CrgMode) -> &'static str {
+    match m {
+        CrgMode::Attached => "attached",
+        CrgMode::Attached0 => "attached0",
+        CrgMode::Genuine => "genuine",
+        CrgMode::Global => "global",
+    }
+}
+
+/// The map's facts as JSON.
+fn facts(map: &Map) -> serde_json::Value {
+    let length: f64 = map.roads.iter().map(|r| r.length).sum();
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for road in &map.roads {
+        let n = (road.length / 5.0).ceil().max(1.0) as usize;
+        for k in 0..=n {
+            let r = road.reference(road.length * k as f64 / n as f64);
+            if r.x.is_finite() && r.y.is_finite() {
+                lo = [lo[0].min(r.x), lo[1].min(r.y)];
+                hi = [hi[0].max(r.x), hi[1].max(r.y)];
+            }
+        }
+    }
+    let records: Vec<serde_json::Value> = map
+        .roads
+        .iter()
+        .flat_map(|r| r.crg.iter().map(move |c| (format!("road {}", r.id), c)))
+        .chain(map.junctions.iter().flat_map(|j| j.crg.iter().map(move |c| (format!("junction {}", j.id), c))))
+        .map(|(place, c)| {
+            serde_json::json!({
+                "on": place, "file": c.file, "mode": mode_name(c.mode),
+                "purpose": format!("{:?}", c.purpose).to_lowercase(),
+                "s_start": c.s_start, "s_end": if c.s_end.is_finite() { serde_json::json!(c.s_end) } else { serde_json::Value::Null },
+                "line": c.line,
+            })
+        })
+        .collect();
+    serde_json::json!({
+        "file": map.path.display().to_string(),
+        "opendrive": format!("{}.{}", map.header.rev_major, map.header.rev_minor),
+        "name": map.header.name,
+        "roads": map.roads.len(),
+        "connecting_roads": map.roads.iter().filter(|r| r.junction.is_some()).count(),
+        "junctions": map.junctions.len(),
+        "length": length,
+        "extent": if lo[0].is_finite() { serde_json::json!({"x": [lo[0], hi[0]], "y": [lo[1], hi[1]]}) } else { serde_json::Value::Null },
+        "crg_records": records,
+    })
+}
+
+fn info(map: &Map, json: bool) -> Result<(), String> {
+    let f = facts(map);
+    if json {
+        println!("{}", serde_json::to_string_pretty(&f).map_err(|e| e.to_string())?);
+        return Ok(());
+    }
+    println!(
+        "file           {} (OpenDRIVE {})",
+        f["file"].as_str().unwrap_or(""),
+        f["opendrive"].as_str().unwrap_or("")
+    );
+    println!(
+        "roads          {} ({} connecting roads in junctions), {:.1} m in all",
+        f["roads"],
+        f["connecting_roads"],
+        f["length"].as_f64().unwrap_or(0.0)
+    );
+    println!("junctions      {}", f["junctions"]);
+    if let Some(e) = f["extent"].as_object() {
+        let (x, y) = (&e["x"], &e["y"]);
+        println!(
+            "extent         x {:.2} .. {:.2} m, y {:.2} .. {:.2} m",
+            x[0].as_f64().unwrap_or(f64::NAN),
+            x[1].as_f64().unwrap_or(f64::NAN),
+            y[0].as_f64().unwrap_or(f64::NAN),
+            y[1].as_f64().unwrap_or(f64::NAN)
+        );
+    }
+    let records = f["crg_records"].as_array().cloned().unwrap_or_default();
+    println!("CRG records    {}", records.len());
+    for r in records {
+        let end = r["s_end"].as_f64().map_or("end".to_string(), |e| format!("{e}"));
+        println!(
+            "  {}: {} ({}, {}), s {} to {}, line {}",
+            r["on"].as_str().unwrap_or(""),
+            r["file"].as_str().unwrap_or(""),
+            r["mode"].as_str().unwrap_or(""),
+            r["purpose"].as_str().unwrap_or(""),
+            r["s_start"],
+            end,
+            r["line"]
+        );
+    }
+    Ok(())
+}
+
+fn number(x: f64) -> String {
+    if x.is_nan() {
+        "nan".into()
+    } else {
+        format!("{x}")
+    }
+}
+
+fn eval(path: &Path) -> Result<(), String> {
+    let surface = Arc::new(Surface::load(path).map_err(|e| e.to_string())?);
+    let mut probe = surface.probe();
+    let stdin = std::io::stdin();
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    let io = |e: std::io::Error| format!("stdout: {e}");
+    for (k, line) in stdin.lock().lines().enumerate() {
+        let line = line.map_err(|e| format!("stdin: {e}"))?;
+        let text = line.trim();
+        if text.is_empty() || text.starts_with('#') {
+            continue;
+        }
+        let values: Vec<f64> = text
+            .split(|c: char| c.is_whitespace() || c == ',')
+            .filter(|s| !s.is_empty())
+            .map(str::parse)
+            .collect::<Result<_, _>>()
+            .map_err(|_| format!("stdin:{}: '{text}' is not two numbers", k + 1))?;
+        let [x, y] = values[..] else { return Err(format!("stdin:{}: '{text}' is not two numbers", k + 1)) };
+        match probe.ground(x, y) {
+            Some(g) => {
+                let road = &surface.map().roads[g.road].id;
+                writeln!(out, "{} {} {road} {} {}", number(g.z), number(g.friction), g.s, g.t).map_err(io)?;
+            }
+            None => writeln!(out, "nan nan - nan nan").map_err(io)?,
+        }
+    }
+    out.flush().map_err(io)
+}
+
+/// Runs an `odr` command; the exit status.
+pub fn run(command: OdrCommand) -> Result<ExitCode, String> {
+    match command {
+        OdrCommand::Info { map, json } => info(&load(&map)?, json)?,
+        OdrCommand::Check { map } => {
+            let m = load(&map)?;
+            let findings = opencrg_odr::check(&m);
+            for f in &findings {
+                println!("{}:{f}", map.display());
+            }
+            if !findings.is_empty() {
+                eprintln!("{}: {} finding(s)", map.display(), findings.len());
+                return Ok(ExitCode::from(1));
+            }
+            println!("{}: passes the checks", map.display());
+        }
+        OdrCommand::Eval { map } => eval(&map)?,
+    }
+    Ok(ExitCode::SUCCESS)
+}

@@ -1,0 +1,134 @@
+//! `opencrg odr`: info on a shared map, check on a clean and a broken map, eval on a map
+//! with CRG records (plane CRG files, answers against closed forms).
+
+use opencrg::synth::RoadSpec;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+
+fn dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("opencrg-cli-{}-odr-{name}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn opencrg(args: &[&str], stdin: &str) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_opencrg"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child.stdin.take().unwrap().write_all(stdin.as_bytes()).unwrap();
+    child.wait_with_output().unwrap()
+}
+
+fn shared(rel: &str) -> String {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/opendrive").join(rel).display().to_string()
+}
+
+#[test]
+fn info_counts_the_map() {
+    let out = opencrg(&["odr", "info", &shared("carla/Town01.xodr"), "--json"], "");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!((j["roads"].as_u64(), j["junctions"].as_u64()), (Some(98), Some(12)));
+    assert!(j["length"].as_f64().unwrap() > 3000.0);
+    let out = opencrg(&["odr", "info", "/nonexistent.xodr"], "");
+    assert_eq!(out.status.code(), Some(2));
+}
+
+/// A straight road 60 m along x from the origin with one lane each side (4 m, friction
+/// 0.8), and `records`.
+fn map(d: &Path, records: &str) -> String {
+    let text = format!(
+        r#"<?xml version="1.0"?>
+<OpenDRIVE><header revMajor="1" revMinor="8"/>
+<road id="main" length="60" junction="-1">
+<planView><geometry s="0" x="0" y="0" hdg="0" length="60"><line/></geometry></planView>
+<elevationProfile><elevation s="0" a="1" b="0.01" c="0" d="0"/></elevationProfile>
+<lanes><laneSection s="0">
+<left><lane id="1" type="driving"><width sOffset="0" a="4" b="0" c="0" d="0"/><material sOffset="0" friction="0.8"/></lane></left>
+<center><lane id="0" type="none"/></center>
+<right><lane id="-1" type="driving"><width sOffset="0" a="4" b="0" c="0" d="0"/><material sOffset="0" friction="0.8"/></lane></right>
+</laneSection></lanes>
+<surface>{records}</surface>
+</road></OpenDRIVE>"#
+    );
+    let p = d.join("map.xodr");
+    std::fs::write(&p, text).unwrap();
+    p.display().to_string()
+}
+
+#[test]
+fn check_names_the_road_and_the_record() {
+    let d = dir("check");
+    let spec = RoadSpec::straight(10.0, 4.0, 0.5, 0.5).with_elevation(|u, v| 0.01 * u + 0.02 * v);
+    std::fs::write(d.join("plane.crg"), spec.to_crg()).unwrap();
+    let clean = map(&d, r#"<CRG file="plane.crg" sStart="5" sEnd="15" mode="attached" orientation="same"/>"#);
+    let out = opencrg(&["odr", "check", &clean], "");
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stdout));
+    let broken = map(
+        &d,
+        r#"<CRG file="plane.crg" sStart="5" sEnd="75" mode="attached" orientation="same"/>
+<CRG file="plane.crg" sStart="0" sEnd="10" mode="attached" orientation="same" purpose="friction" zScale="2"/>
+<CRG file="gone.crg" sStart="0" sEnd="10" mode="genuine" orientation="opposite"/>"#,
+    );
+    let out = opencrg(&["odr", "check", &broken], "");
+    assert_eq!(out.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&out.stdout);
+    for words in [
+        "road main, CRG record 'plane.crg': sStart 5 and sEnd 75",
+        "mode attached is not allowed for friction",
+        "sets no zScale",
+        "orientation opposite only",
+        "'gone.crg': the CRG file cannot be used",
+    ] {
+        assert!(text.contains(words), "'{words}' not in:\n{text}");
+    }
+    assert!(text.lines().all(|l| l.contains("map.xodr:line ")), "{text}");
+}
+
+#[test]
+fn eval_answers_with_the_crg_records_laid_on() {
+    let d = dir("eval");
+    let (a, b, c) = (0.01, -0.02, 0.005);
+    let spec =
+        RoadSpec::straight(20.0, 4.0, 0.25, 0.25).with_slope(|_| 0.05).with_elevation(move |u, v| a * u + b * v + c);
+    std::fs::write(d.join("bumps.crg"), spec.to_crg()).unwrap();
+    let mu = RoadSpec::straight(20.0, 8.0, 0.5, 0.5).with_elevation(|_, v| 0.6 + 0.01 * v);
+    std::fs::write(d.join("mu.crg"), mu.to_crg()).unwrap();
+    let m = map(
+        &d,
+        r#"<CRG file="bumps.crg" sStart="10" sEnd="30" mode="attached" orientation="same" sOffset="10"/>
+<CRG file="mu.crg" sStart="10" sEnd="30" mode="attached0" purpose="friction" sOffset="10"/>"#,
+    );
+    let points: [(f64, f64); 4] = [(15.0, 1.0), (25.0, -1.5), (40.0, 2.0), (15.0, 30.0)];
+    let input: String = points.iter().map(|(x, y)| format!("{x} {y}\n")).collect();
+    let out = opencrg(&["odr", "eval", &m], &input);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8_lossy(&out.stdout);
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), points.len());
+    for (line, &(x, y)) in lines.iter().zip(&points) {
+        let f: Vec<&str> = line.split_whitespace().collect();
+        if y.abs() > 4.0 {
+            assert_eq!(*line, "nan nan - nan nan");
+            continue;
+        }
+        let (z, mu, road, s, t): (f64, f64, &str, f64, f64) =
+            (f[0].parse().unwrap(), f[1].parse().unwrap(), f[2], f[3].parse().unwrap(), f[4].parse().unwrap());
+        assert_eq!(road, "main");
+        assert!((s - x).abs() < 1e-3 && (t - y).abs() < 1e-3, "{line}");
+        let own = 1.0 + 0.01 * x;
+        if (10.0..=30.0).contains(&x) {
+            let (u, v) = (x - 10.0, y);
+            assert!((z - (own + a * u + b * v + c)).abs() < 1e-3, "{line}");
+            assert!((mu - (0.6 + 0.01 * v)).abs() < 1e-6, "{line}");
+        } else {
+            assert!((z - own).abs() < 1e-3, "{line}");
+            assert_eq!(mu, 0.8);
+        }
+    }
+}
