@@ -8,9 +8,17 @@ use std::path::Path;
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let dir = std::env::args().nth(1).unwrap_or_else(|| "fuzz/corpus".into());
     let dir = Path::new(&dir);
-    for target in
-        ["header", "text_reader", "binary_reader", "evaluation", "point_files", "map_section", "formula", "tools"]
-    {
+    for target in [
+        "header",
+        "text_reader",
+        "binary_reader",
+        "evaluation",
+        "point_files",
+        "map_section",
+        "formula",
+        "tools",
+        "odr_map",
+    ] {
         std::fs::create_dir_all(dir.join(target))?;
     }
     let roads = [
@@ -44,6 +52,16 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         std::fs::write(dir.join(format!("evaluation/seed{i}")), seed)?;
     }
     point_file_seeds(&dir.join("point_files"))?;
+    // The small OpenDRIVE maps of ../shared (read from there, never copied into the
+    // repository).
+    if let Ok(maps) = std::fs::read_dir("../shared/opendrive/esmini") {
+        for entry in maps.flatten() {
+            let p = entry.path();
+            if p.extension().is_some_and(|e| e == "xodr") && entry.metadata().is_ok_and(|m| m.len() < 40_000) {
+                std::fs::copy(&p, dir.join("odr_map").join(entry.file_name()))?;
+            }
+        }
+    }
     let sections = [
         "GELL_NM = 'WGS84'\nPROJ_NM = 'UTM_32U'",
         "LELL_NM = BESSELDHDN\nPROJ_NM = GK3_4",

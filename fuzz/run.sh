@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-30}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(header text_reader binary_reader evaluation point_files map_section formula tools)
+[ ${#targets[@]} -gt 0 ] || targets=(header text_reader binary_reader evaluation point_files map_section formula tools odr_map)
 host=$(rustc -vV | sed -n 's/^host: //p')
 # The coverage instrumentation libFuzzer reads (what cargo-fuzz passes), on the targets
 # only (--target keeps it off build scripts); debug assertions and overflow checks on.

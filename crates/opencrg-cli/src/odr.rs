@@ -50,7 +50,7 @@ fn facts(map: &Map) -> serde_json::Value {
     let length: f64 = map.roads.iter().map(|r| r.length).sum();
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
     for road in &map.roads {
-        let n = (road.length / 5.0).ceil().max(1.0) as usize;
+        let n = (road.length / 5.0).ceil().clamp(1.0, 10_000.0) as usize;
         for k in 0..=n {
             let r = road.reference(road.length * k as f64 / n as f64);
             if r.x.is_finite() && r.y.is_finite() {

@@ -75,9 +75,10 @@ fn cubic_slope(c: &[f64; 4], p: f64) -> f64 {
 }
 
 /// Quadrature pieces for an integrand that turns through `turn` radians: one per radian,
-/// and at least one per 100 m of `length`.
+/// and at least one per 100 m of `length` (at most 4096: a spiral turning through more
+/// than 650 full circles is no road).
 fn pieces(turn: f64, length: f64) -> usize {
-    (turn.abs().max(length.abs() / 100.0).ceil() as usize).clamp(1, 1_000_000)
+    (turn.abs().max(length.abs() / 100.0).ceil() as usize).clamp(1, 4096)
 }
 
 impl Geometry {

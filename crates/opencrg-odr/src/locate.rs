@@ -37,8 +37,10 @@ pub struct RoadIndex {
     tree: RTree<Stretch>,
 }
 
-/// The longest stretch indexed (m).
+/// The longest stretch indexed (m), unless a road would need more than [`MAX_STRETCHES`].
 const STRETCH: f64 = 5.0;
+/// The most stretches a road is cut into (a road of 500 km in 5 m stretches).
+const MAX_STRETCHES: f64 = 100_000.0;
 
 /// How far the lanes of `road` reach from its reference line at `s` (m, on the ground).
 fn reach(road: &Road, s: f64) -> f64 {
@@ -65,8 +67,10 @@ impl RoadIndex {
             cuts.retain(|s| (0.0..=road.length).contains(s));
             cuts.sort_by(f64::total_cmp);
             cuts.dedup();
+            cuts.truncate(MAX_STRETCHES as usize);
+            let longest = STRETCH.max(road.length / MAX_STRETCHES);
             for w in cuts.windows(2) {
-                let n = ((w[1] - w[0]) / STRETCH).ceil().max(1.0) as usize;
+                let n = ((w[1] - w[0]) / longest).ceil().clamp(1.0, MAX_STRETCHES) as usize;
                 for k in 0..n {
                     let (s0, s1) =
                         (w[0] + (w[1] - w[0]) * k as f64 / n as f64, w[0] + (w[1] - w[0]) * (k + 1) as f64 / n as f64);
