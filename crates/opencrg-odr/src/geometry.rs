@@ -64,6 +64,8 @@ pub struct Pose {
     pub y: f64,
     /// Heading (rad).
     pub hdg: f64,
+    /// Curvature (1/m, positive to the left).
+    pub curvature: f64,
 }
 
 fn cubic(c: &[f64; 4], p: f64) -> f64 {
@@ -72,6 +74,10 @@ fn cubic(c: &[f64; 4], p: f64) -> f64 {
 
 fn cubic_slope(c: &[f64; 4], p: f64) -> f64 {
     c[1] + p * (2.0 * c[2] + p * 3.0 * c[3])
+}
+
+fn cubic_bend(c: &[f64; 4], p: f64) -> f64 {
+    2.0 * c[2] + 6.0 * c[3] * p
 }
 
 /// Quadrature pieces for an integrand that turns through `turn` radians: one per radian,
@@ -84,13 +90,13 @@ fn pieces(turn: f64, length: f64) -> usize {
 impl Geometry {
     /// The pose `ds` after the record's start (beyond its ends the shape continues).
     pub fn pose(&self, ds: f64) -> Pose {
-        let (local_x, local_y, turn) = match self.shape {
-            Shape::Line => (ds, 0.0, 0.0),
+        let (local_x, local_y, turn, curvature) = match self.shape {
+            Shape::Line => (ds, 0.0, 0.0, 0.0),
             Shape::Arc { curvature: k } => {
                 // The chord 2 sin(k ds / 2) / k, at half the turn: exact as k goes to 0.
                 let half = 0.5 * k * ds;
                 let chord = if k == 0.0 { ds } else { 2.0 * half.sin() / k };
-                (chord * half.cos(), chord * half.sin(), k * ds)
+                (chord * half.cos(), chord * half.sin(), k * ds, k)
             }
             Shape::Spiral { start, end } => {
                 let rate = if self.length > 0.0 { (end - start) / self.length } else { 0.0 };
@@ -105,17 +111,20 @@ impl Geometry {
                     ds,
                     pieces(turn_rate * ds, ds),
                 );
-                (x, y, angle(ds))
+                (x, y, angle(ds), start + rate * ds)
             }
             Shape::Poly3 { coefficients } => {
                 let u = self.parameter_for(ds, &|u| (1.0, cubic_slope(&coefficients, u)), 1.0, ds);
-                (u, cubic(&coefficients, u), cubic_slope(&coefficients, u).atan())
+                let slope = cubic_slope(&coefficients, u);
+                let bend = cubic_bend(&coefficients, u) / (1.0 + slope * slope).powf(1.5);
+                (u, cubic(&coefficients, u), slope.atan(), bend)
             }
             Shape::ParamPoly3 { u, v, normalized } => {
                 let end = if normalized { 1.0 } else { self.length };
                 let p = self.parameter_for(ds, &|p| (cubic_slope(&u, p), cubic_slope(&v, p)), end, self.length);
                 let (du, dv) = (cubic_slope(&u, p), cubic_slope(&v, p));
-                (cubic(&u, p) - u[0], cubic(&v, p) - v[0], dv.atan2(du))
+                let bend = (du * cubic_bend(&v, p) - dv * cubic_bend(&u, p)) / (du * du + dv * dv).powf(1.5);
+                (cubic(&u, p) - u[0], cubic(&v, p) - v[0], dv.atan2(du), bend)
             }
         };
         let (sin, cos) = self.hdg.sin_cos();
@@ -123,6 +132,7 @@ impl Geometry {
             x: self.x + cos * local_x - sin * local_y,
             y: self.y + sin * local_x + cos * local_y,
             hdg: self.hdg + turn,
+            curvature,
         };
         if let Shape::ParamPoly3 { u, v, .. } = self.shape {
             // The curve's own start offset (a terms) moves the whole record.

@@ -94,22 +94,19 @@ pub struct LaneSpan<'a> {
 impl LaneSection {
     /// The lanes of one side (`left` or right) at `ds` after the section's start, outwards,
     /// with their borders, the centre lane at `offset`.
-    pub fn spans(&self, left: bool, ds: f64, offset: f64) -> Vec<LaneSpan<'_>> {
+    pub fn spans(&self, left: bool, ds: f64, offset: f64) -> impl Iterator<Item = LaneSpan<'_>> {
         let lanes = if left { &self.left } else { &self.right };
         let sign = if left { 1.0 } else { -1.0 };
         let mut inner = offset;
-        lanes
-            .iter()
-            .map(|lane| {
-                let outer = match holding(&lane.border, ds, |r| r.s) {
-                    Some(b) if lane.width.is_empty() => b.value(ds - b.s),
-                    _ => inner + sign * lane.width_at(ds),
-                };
-                let span = LaneSpan { lane, inner, outer };
-                inner = outer;
-                span
-            })
-            .collect()
+        lanes.iter().map(move |lane| {
+            let outer = match holding(&lane.border, ds, |r| r.s) {
+                Some(b) if lane.width.is_empty() => b.value(ds - b.s),
+                _ => inner + sign * lane.width_at(ds),
+            };
+            let span = LaneSpan { lane, inner, outer };
+            inner = outer;
+            span
+        })
     }
 
     /// The lane at `t`, `ds` after the section's start, with its borders: the lane whose

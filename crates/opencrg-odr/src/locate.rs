@@ -118,13 +118,8 @@ impl Road {
             let (ex, ey) = (x - p.x, y - p.y);
             let along = ex * cos + ey * sin;
             let across = -ex * sin + ey * cos;
-            // The curvature, for the step's denominator: the normal turns as s moves.
-            let h = 1e-4;
-            let ahead = pose((s + h).min(self.length))?;
-            let behind = pose((s - h).max(0.0))?;
-            let span = (s + h).min(self.length) - (s - h).max(0.0);
-            let kappa = if span > 0.0 { (ahead.hdg - behind.hdg) / span } else { 0.0 };
-            let denominator = (1.0 - kappa * across).max(0.1);
+            // The normal turns with the curvature as s moves.
+            let denominator = (1.0 - p.curvature * across).max(0.1);
             let step = (along / denominator).clamp(-STRETCH, STRETCH);
             let next = (s + step).clamp(lo - 1e-9, hi + 1e-9);
             let done = (next - s).abs() < 1e-10;
