@@ -40,6 +40,16 @@ impl<'py, const N: usize> Points<'py, N> {
         Ok(Points { arrays, shape, scalar })
     }
 
+    /// Whether every input was a scalar.
+    pub(crate) fn is_scalar(&self) -> bool {
+        self.scalar
+    }
+
+    /// The broadcast shape.
+    pub(crate) fn shape(&self) -> &[usize] {
+        &self.shape
+    }
+
     /// The inputs as slices of the same length.
     pub(crate) fn slices(&self) -> PyResult<[&[f64]; N]> {
         let mut out = [&[][..]; N];

@@ -11,6 +11,7 @@
 //! - `roughness`: IRI and ISO 8608 of tracks and profiles;
 //! - `tools`: new roads from roads (cut, flip, append, resample, filter, slope, banking)
 //!   and from points (generate, import_points), point files, comparisons;
+//! - `odr`: `opencrg.odr`, OpenDRIVE maps with CRG surfaces;
 //! - `errors`: the core's errors as Python exceptions.
 
 use pyo3::prelude::*;
@@ -21,6 +22,7 @@ mod errors;
 mod evaluation;
 mod georef;
 mod names;
+mod odr;
 mod recipe;
 mod road;
 mod roughness;
@@ -42,5 +44,6 @@ fn opencrg_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(tools::compare, m)?)?;
     errors::register(m)?;
     names::register(m)?;
+    odr::register(m)?;
     Ok(())
 }
