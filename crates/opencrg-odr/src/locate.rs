@@ -112,8 +112,8 @@ impl Road {
         let (lo, hi) = (lo.max(0.0), hi.min(self.length));
         let mut s = guess.clamp(lo, hi);
         let pose = |s: f64| self.geometry_at(s).map(|g| g.pose(s - g.s));
+        let mut p = pose(s)?;
         for _ in 0..30 {
-            let p = pose(s)?;
             let (sin, cos) = p.hdg.sin_cos();
             let (ex, ey) = (x - p.x, y - p.y);
             let along = ex * cos + ey * sin;
@@ -121,14 +121,13 @@ impl Road {
             // The normal turns with the curvature as s moves.
             let denominator = (1.0 - p.curvature * across).max(0.1);
             let step = (along / denominator).clamp(-STRETCH, STRETCH);
-            let next = (s + step).clamp(lo - 1e-9, hi + 1e-9);
-            let done = (next - s).abs() < 1e-10;
-            s = next.clamp(lo, hi);
-            if done {
+            let next = (s + step).clamp(lo, hi);
+            if (next - s).abs() < 1e-10 {
                 break;
             }
+            s = next;
+            p = pose(s)?;
         }
-        let p = pose(s)?;
         let (sin, cos) = p.hdg.sin_cos();
         let (ex, ey) = (x - p.x, y - p.y);
         if (ex * cos + ey * sin).abs() > 1e-6 {
@@ -141,7 +140,11 @@ impl Road {
         let mut t = ground / cr;
         if roll != 0.0 {
             for _ in 0..4 {
-                t = (ground + self.height_above_section(s, t) * sr) / cr;
+                let h = self.height_above_section(s, t);
+                if h == 0.0 {
+                    break;
+                }
+                t = (ground + h * sr) / cr;
             }
         }
         Some((s, t))
