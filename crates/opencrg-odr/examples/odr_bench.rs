@@ -86,9 +86,9 @@ fn wheels(dir: &str) {
     let t = Instant::now();
     let mut sum = 0.0;
     for i in 0..steps {
-        for w in 0..4 {
-            let (x, y) = paths[w][i];
-            sum += probes[w].ground(x, y).map_or(0.0, |g| g.z);
+        for (path, probe) in paths.iter().zip(probes.iter_mut()) {
+            let (x, y) = path[i];
+            sum += probe.ground(x, y).map_or(0.0, |g| g.z);
         }
     }
     let ns = t.elapsed().as_secs_f64() * 1e9 / (4 * steps) as f64;
