@@ -11,16 +11,17 @@ use opencrg::{Error, Location, Result};
 use roxmltree::Node;
 use std::path::{Path, PathBuf};
 
-/// Where the reader is: the file, and the document for line numbers.
+/// Where the reader is: the file, and where its lines start (for line numbers).
 struct Reader<'a> {
     path: &'a Path,
     folder: PathBuf,
-    doc: &'a roxmltree::Document<'a>,
+    line_starts: Vec<usize>,
 }
 
 impl Reader<'_> {
+    /// The 1-based line of the element's start.
     fn line(&self, node: Node) -> usize {
-        self.doc.text_pos_at(node.range().start).row as usize
+        self.line_starts.partition_point(|&start| start <= node.range().start)
     }
 
     fn refuse(&self, node: Node, field: &str, message: impl Into<String>) -> Error {
@@ -293,7 +294,8 @@ impl Map {
         if root.tag_name().name() != "OpenDRIVE" {
             return Err(refuse(1, "root", format!("<{}> is not <OpenDRIVE>", root.tag_name().name())));
         }
-        let reader = Reader { path, folder: path.parent().map(Path::to_path_buf).unwrap_or_default(), doc: &doc };
+        let line_starts = std::iter::once(0).chain(text.match_indices('\n').map(|(i, _)| i + 1)).collect();
+        let reader = Reader { path, folder: path.parent().map(Path::to_path_buf).unwrap_or_default(), line_starts };
         let mut header = Header::default();
         let (mut roads, mut junctions) = (Vec::new(), Vec::new());
         for node in root.children().filter(Node::is_element) {
