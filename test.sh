@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs every test: formatting, lints and documentation, the Rust tests (unit,
 # integration, header freshness, the opencrg command, doctests incl. the README's), a
-# short run of every fuzz target, the OpenDRIVE geometry against libOpenDRIVE, then
+# short run of every fuzz target, the OpenDRIVE geometry against libOpenDRIVE and its CRG
+# records against the reference C library, then
 # through CTest the C tests (also under the sanitizers and valgrind), the header and
 # symbol checks, the CMake consumer project, the conformance suite in both behaviour
 # profiles (.so and .a) and the differential tester; the same C tests and conformance
@@ -25,6 +26,13 @@ g++ -O2 -std=c++17 -I target/libopendrive/include crates/opencrg-odr/tests/oracl
     -L target/libopendrive/lib -lOpenDrive -lpugixml -o target/libopendrive/answers
 OPENCRG_ODR_ORACLE="$PWD/target/libopendrive/answers" \
     cargo test --release -p opencrg-odr --test libopendrive -- --include-ignored --nocapture
+# The CRG records of every mode against the reference C library, built outside the
+# project by ../shared/reference/build-references.sh.
+../shared/reference/build-references.sh "$PWD/target/crgref" >/dev/null
+cc -O2 -I target/crgref/up crates/opencrg-odr/tests/oracle/crg_reference_answers.c target/crgref/up/libOpenCRG.so \
+    -lm -Wl,-rpath,"$PWD/target/crgref/up" -o target/crgref/answers
+OPENCRG_CRG_REFERENCE="$PWD/target/crgref/answers" \
+    cargo test --release -p opencrg-odr --test crg_reference -- --include-ignored --nocapture
 cargo build --release -p opencrg-capi -p opencrg-cli
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"

@@ -200,8 +200,9 @@ impl Reader<'_> {
         })
     }
 
+    /// The `<CRG>` records of every `<surface>` of a road or junction, in the file's order.
     fn crg_records(&self, parent: Node) -> Result<Vec<CrgRecord>> {
-        children(child(parent, "surface"), "CRG").map(|c| self.crg(c)).collect()
+        children(Some(parent), "surface").flat_map(|s| children(Some(s), "CRG")).map(|c| self.crg(c)).collect()
     }
 
     fn road(&self, node: Node) -> Result<Road> {
