@@ -11,7 +11,7 @@
 use opencrg::synth::RoadSpec;
 use opencrg_odr::{Map, Surface};
 use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Stdio};
 use std::sync::Arc;
 
