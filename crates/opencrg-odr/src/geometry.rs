@@ -2,7 +2,7 @@
 //! poly3 and paramPoly3, each giving x, y and heading at a distance along it, in double
 //! precision.
 
-use crate::quadrature::{integrate, integrate_pair};
+use crate::quadrature::{integrate, integrate_pair, points_for_turn};
 
 /// The shape of one record.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -110,6 +110,7 @@ impl Geometry {
                     0.0,
                     ds,
                     pieces(turn_rate * ds, ds),
+                    16,
                 );
                 (x, y, angle(ds), start + rate * ds)
             }
@@ -140,6 +141,32 @@ impl Geometry {
             pose.y += sin * u[0] + cos * v[0];
         }
         pose
+    }
+
+    /// The pose `ds` after the record's start, from the pose `from` known `from_ds` after
+    /// it: for a spiral, its heading integrated over the stretch between them only, with
+    /// as few points as the stretch's turn needs (a wheel moving centimetres per step
+    /// takes two); for the other shapes [`Geometry::pose`].
+    pub fn pose_from(&self, from_ds: f64, from: Pose, ds: f64) -> Pose {
+        let Shape::Spiral { start, end } = self.shape else { return self.pose(ds) };
+        let rate = if self.length > 0.0 { (end - start) / self.length } else { 0.0 };
+        let heading = |t: f64| self.hdg + t * (start + 0.5 * rate * t);
+        let (k0, k1) = (start + rate * from_ds, start + rate * ds);
+        let turn = k0.abs().max(k1.abs()) * (ds - from_ds).abs();
+        if turn > 0.5 {
+            return self.pose(ds);
+        }
+        let (dx, dy) = integrate_pair(
+            |t| {
+                let a = heading(t);
+                (a.cos(), a.sin())
+            },
+            from_ds,
+            ds,
+            1,
+            points_for_turn(turn),
+        );
+        Pose { x: from.x + dx, y: from.y + dy, hdg: heading(ds), curvature: k1 }
     }
 
     /// The length of the curve itself: for poly3 and paramPoly3 the arc length over the

@@ -6,8 +6,10 @@
 //! index, and its own contact points on the CRG files.
 
 use crate::crg::{self, CrgFiles, CrgPoints};
+use crate::geometry::Pose;
 use crate::locate::{RoadIndex, RoadPos};
 use crate::map::{CrgPurpose, CrgRecord, Map, Road};
+use crate::surface::span_height;
 use opencrg::Result;
 use std::path::Path;
 use std::sync::Arc;
@@ -75,23 +77,25 @@ impl Surface {
 
     /// Where (x, y) lies on the map, searched through the index: the road whose lane
     /// holds it (a driving lane's before a lane of type `none`, then the first road in
-    /// the file).
-    fn locate(&self, x: f64, y: f64) -> Option<RoadPos> {
-        let mut best: Option<(bool, RoadPos)> = None;
+    /// the file), with the reference line's pose there.
+    fn locate(&self, x: f64, y: f64) -> Option<(RoadPos, Pose)> {
+        let mut best: Option<(bool, RoadPos, Pose)> = None;
         for (i, s0, s1) in self.index.candidates(x, y) {
             let road = &self.map.roads[i];
-            let Some((s, t)) = road.project(x, y, 0.5 * (s0 + s1), s0 - 1.0, s1 + 1.0) else { continue };
+            let Some((s, t, pose)) = road.project_from(x, y, None, 0.5 * (s0 + s1), s0 - 1.0, s1 + 1.0) else {
+                continue;
+            };
             let Some(span) = road.lane_at(s, t) else { continue };
             let real = span.lane.kind != "none";
             let better = match best {
                 None => true,
-                Some((was_real, was)) => (real && !was_real) || (real == was_real && i < was.road),
+                Some((was_real, was, _)) => (real && !was_real) || (real == was_real && i < was.road),
             };
             if better {
-                best = Some((real, RoadPos { road: i, s, t }));
+                best = Some((real, RoadPos { road: i, s, t }, pose));
             }
         }
-        best.map(|(_, p)| p)
+        best.map(|(_, p, pose)| (p, pose))
     }
 }
 
@@ -99,7 +103,8 @@ impl Surface {
 /// files. Cheap to make; not shared between threads.
 pub struct Probe {
     surface: Arc<Surface>,
-    last: Option<RoadPos>,
+    /// Where the wheel was, and the reference line's pose there.
+    last: Option<(RoadPos, Pose)>,
     points: CrgPoints,
 }
 
@@ -112,12 +117,18 @@ impl Probe {
     /// Where (x, y) lies on the map: first on the road the wheel was on, near where it
     /// was, else through the index; `None` off every road.
     pub fn locate(&mut self, x: f64, y: f64) -> Option<RoadPos> {
+        self.find(x, y).map(|(p, _)| p)
+    }
+
+    /// [`Probe::locate`] with the reference line's pose there.
+    fn find(&mut self, x: f64, y: f64) -> Option<(RoadPos, Pose)> {
         let surface = &self.surface;
-        if let Some(last) = self.last {
+        if let Some((last, pose)) = self.last {
             let road = &surface.map.roads[last.road];
-            if let Some((s, t)) = road.project(x, y, last.s, last.s - 10.0, last.s + 10.0) {
+            let near = Some((last.s, pose));
+            if let Some((s, t, pose)) = road.project_from(x, y, near, last.s, last.s - 10.0, last.s + 10.0) {
                 if road.lane_at(s, t).is_some_and(|l| l.lane.kind != "none") {
-                    let here = RoadPos { road: last.road, s, t };
+                    let here = (RoadPos { road: last.road, s, t }, pose);
                     self.last = Some(here);
                     return Some(here);
                 }
@@ -130,25 +141,31 @@ impl Probe {
 
     /// The ground at (x, y); `None` off every road.
     pub fn ground(&mut self, x: f64, y: f64) -> Option<Ground> {
-        let pos = self.locate(x, y)?;
-        Some(self.ground_at(pos, x, y))
+        let (pos, pose) = self.find(x, y)?;
+        Some(self.ground_at(pos, Some(pose), x, y))
     }
 
-    /// The ground at a known place of the map, (x, y) its world point.
-    fn ground_at(&mut self, pos: RoadPos, x: f64, y: f64) -> Ground {
+    /// The ground at a known place of the map, (x, y) its world point; `pose` the
+    /// reference line's there, when known.
+    fn ground_at(&mut self, pos: RoadPos, pose: Option<Pose>, x: f64, y: f64) -> Ground {
         let surface = &self.surface;
         let road = &surface.map.roads[pos.road];
         let (s, t) = (pos.s, pos.t);
-        let lane = road.lane_at(s, t);
+        let reference = match pose {
+            Some(p) => road.reference_at(s, p),
+            None => road.reference(s),
+        };
+        let section = road.lanes.section_at(s);
+        let lane = section.and_then(|(sec, ds)| sec.lane_at(ds, t, road.lanes.offset.at(s)).map(|l| (l, ds)));
+        let lane_height = lane.map_or(0.0, |(l, ds)| span_height(&l, ds, t));
+        let height = road.shape_height(s, t) + lane_height;
         let mut ground = Ground {
             road: pos.road,
-            lane: lane.map_or(0, |l| l.lane.id),
+            lane: lane.map_or(0, |(l, _)| l.lane.id),
             s,
             t,
-            z: road.surface_point(s, t)[2],
-            friction: lane
-                .and_then(|l| road.lanes.section_at(s).and_then(|(_, ds)| l.lane.friction_at(ds)))
-                .unwrap_or(f64::NAN),
+            z: reference.at(t, height)[2],
+            friction: lane.and_then(|(l, ds)| l.lane.friction_at(ds)).unwrap_or(f64::NAN),
         };
         let layers = &surface.layers[pos.road];
         for purpose in [CrgPurpose::Elevation, CrgPurpose::Friction] {
@@ -174,7 +191,7 @@ impl Probe {
         if !(x.is_finite() && y.is_finite()) {
             return None;
         }
-        Some((x, y, self.ground_at(RoadPos { road, s, t }, x, y)))
+        Some((x, y, self.ground_at(RoadPos { road, s, t }, None, x, y)))
     }
 
     /// The upward unit normal of the surface at (x, y), CRG records laid on, from the

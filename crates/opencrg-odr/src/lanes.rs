@@ -109,6 +109,11 @@ impl LaneSection {
         })
     }
 
+    /// Whether any of its lanes has a height record.
+    pub fn has_heights(&self) -> bool {
+        self.left.iter().chain(&self.right).any(|l| !l.heights.is_empty())
+    }
+
     /// The lane at `t`, `ds` after the section's start, with its borders: the lane whose
     /// borders enclose t (on a border, the outer lane); `None` beyond the outermost lanes
     /// or on the centre line of a section without lanes there.

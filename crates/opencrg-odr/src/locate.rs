@@ -3,6 +3,7 @@
 //! take; a point is projected onto the reference line of each stretch whose box holds it
 //! (Newton's method on the tangent), and kept where a lane lies at the (s, t) found.
 
+use crate::geometry::Pose;
 use crate::map::{Map, Road};
 use rstar::{RTree, RTreeObject, AABB};
 
@@ -109,10 +110,36 @@ impl Road {
     /// cross section the surface point over it lies; `None` where the search leaves the
     /// range or the road.
     pub fn project(&self, x: f64, y: f64, guess: f64, lo: f64, hi: f64) -> Option<(f64, f64)> {
+        self.project_from(x, y, None, guess, lo, hi).map(|(s, t, _)| (s, t))
+    }
+
+    /// [`Road::project`] starting from a known pose of the reference line (`near`: its s
+    /// and pose), each pose of the search reached from the one before it (a short
+    /// quadrature on a spiral); also gives the reference line's pose at the s found.
+    pub(crate) fn project_from(
+        &self,
+        x: f64,
+        y: f64,
+        near: Option<(f64, Pose)>,
+        guess: f64,
+        lo: f64,
+        hi: f64,
+    ) -> Option<(f64, f64, Pose)> {
         let (lo, hi) = (lo.max(0.0), hi.min(self.length));
+        let pose_at = |s: f64, known: Option<(f64, Pose)>| -> Option<Pose> {
+            let g = self.geometry_at(s)?;
+            match known {
+                Some((ks, kp)) if self.geometry_at(ks).is_some_and(|kg| std::ptr::eq(kg, g)) => {
+                    Some(g.pose_from(ks - g.s, kp, s - g.s))
+                }
+                _ => Some(g.pose(s - g.s)),
+            }
+        };
         let mut s = guess.clamp(lo, hi);
-        let pose = |s: f64| self.geometry_at(s).map(|g| g.pose(s - g.s));
-        let mut p = pose(s)?;
+        let mut p = match near {
+            Some((ns, np)) if ns == s => np,
+            _ => pose_at(s, near)?,
+        };
         for _ in 0..30 {
             let (sin, cos) = p.hdg.sin_cos();
             let (ex, ey) = (x - p.x, y - p.y);
@@ -125,8 +152,8 @@ impl Road {
             if (next - s).abs() < 1e-10 {
                 break;
             }
+            p = pose_at(next, Some((s, p)))?;
             s = next;
-            p = pose(s)?;
         }
         let (sin, cos) = p.hdg.sin_cos();
         let (ex, ey) = (x - p.x, y - p.y);
@@ -138,7 +165,8 @@ impl Road {
         let roll = self.superelevation.at(s);
         let (sr, cr) = roll.sin_cos();
         let mut t = ground / cr;
-        if roll != 0.0 {
+        let level = self.shape.is_empty() && !self.lanes.section_at(s).is_some_and(|(l, _)| l.has_heights());
+        if roll != 0.0 && !level {
             for _ in 0..4 {
                 let h = self.height_above_section(s, t);
                 if h == 0.0 {
@@ -147,6 +175,6 @@ impl Road {
                 t = (ground + h * sr) / cr;
             }
         }
-        Some((s, t))
+        Some((s, t, p))
     }
 }

@@ -8,7 +8,7 @@
 //! superelevation. A point at t thus lies `t cos r` from the reference line on the ground.
 //! The lateral shape and the lanes' heights lift the surface along `e_h`.
 
-use crate::geometry::Geometry;
+use crate::geometry::{Geometry, Pose};
 use crate::lanes::LaneSpan;
 use crate::map::Road;
 
@@ -61,7 +61,12 @@ impl Road {
     /// The reference line at `s`.
     pub fn reference(&self, s: f64) -> RefPoint {
         let pose = self.geometry_at(s).map(|g| g.pose(s - g.s));
-        let (x, y, hdg) = pose.map_or((f64::NAN, f64::NAN, f64::NAN), |p| (p.x, p.y, p.hdg));
+        self.reference_at(s, pose.unwrap_or(Pose { x: f64::NAN, y: f64::NAN, hdg: f64::NAN, curvature: f64::NAN }))
+    }
+
+    /// The reference line at `s`, whose pose in the plane is known.
+    pub(crate) fn reference_at(&self, s: f64, pose: Pose) -> RefPoint {
+        let Pose { x, y, hdg, .. } = pose;
         RefPoint {
             x,
             y,
@@ -102,13 +107,20 @@ impl Road {
     pub fn lane_height(&self, s: f64, t: f64) -> f64 {
         let Some((section, ds)) = self.lanes.section_at(s) else { return 0.0 };
         let Some(span) = section.lane_at(ds, t, self.lanes.offset.at(s)) else { return 0.0 };
-        let (inner, outer) = span.lane.height_at(ds);
-        if inner == outer || span.outer == span.inner {
-            return inner;
-        }
-        inner + (outer - inner) * (t - span.inner) / (span.outer - span.inner)
+        span_height(&span, ds, t)
     }
+}
 
+/// The height of the lane `span` at t, `ds` after its section's start.
+pub(crate) fn span_height(span: &LaneSpan, ds: f64, t: f64) -> f64 {
+    let (inner, outer) = span.lane.height_at(ds);
+    if inner == outer || span.outer == span.inner {
+        return inner;
+    }
+    inner + (outer - inner) * (t - span.inner) / (span.outer - span.inner)
+}
+
+impl Road {
     /// The height of the surface above the cross section at (s, t): lateral shape and
     /// lane height.
     pub fn height_above_section(&self, s: f64, t: f64) -> f64 {

@@ -281,3 +281,28 @@ fn friction_records_and_the_material_fallback_and_the_last_record_wins() {
     };
     assert!(e.contains("x.xodr:2") && e.contains("gone.crg"), "{e}");
 }
+
+#[test]
+fn a_wheel_moving_in_small_steps_is_found_as_a_fresh_search_finds_it() {
+    // esmini's curves_elevation: lines, spirals and arcs, climbing. A probe following a
+    // wheel 2 cm a step reaches each pose from the one before (a short quadrature on the
+    // spirals); a fresh probe searches the index and integrates from the record's start.
+    let surface = Arc::new(Surface::load(shared("esmini/curves_elevation.xodr")).unwrap());
+    let road = &surface.map().roads[0];
+    let mut wheel = surface.probe();
+    let mut worst = 0.0f64;
+    let steps = 20_000;
+    for i in 0..steps {
+        let s = 60.0 + i as f64 * 0.02;
+        let p = road.surface_point(s, -1.3);
+        let a = wheel.ground(p[0], p[1]).unwrap();
+        if i % 50 == 0 {
+            let b = surface.probe().ground(p[0], p[1]).unwrap();
+            worst = worst.max((a.s - b.s).abs()).max((a.t - b.t).abs()).max((a.z - b.z).abs());
+        }
+        // Where a record's start lies micrometres off its predecessor's end, the point
+        // finds the other side of the gap.
+        assert!((a.s - s).abs() < 1e-4 && (a.t + 1.3).abs() < 1e-4, "s {s}: {a:?}");
+    }
+    assert!(worst < 1e-6, "{worst}");
+}
