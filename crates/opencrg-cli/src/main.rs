@@ -17,7 +17,7 @@
 //! opencrg import CLOUD OUT [--refline LINE.csv] [--width W] --u-inc DU --v-inc DV
 //! opencrg compare A B [--tolerance T]
 //! opencrg odr info MAP [--json]                  opencrg odr check MAP
-//! opencrg odr eval MAP < points
+//! opencrg odr eval MAP < points                 opencrg odr render MAP OUT.png [--size PX]
 //! ```
 //!
 //! Bad input gives one line on stderr and exit status 2; a road that fails its checks
@@ -158,7 +158,7 @@ enum Command {
     },
     #[command(flatten)]
     Make(make::MakeCommand),
-    /// OpenDRIVE maps with CRG surfaces: info, check, eval.
+    /// OpenDRIVE maps with CRG surfaces: info, check, eval, render.
     #[command(subcommand)]
     Odr(odr::OdrCommand),
 }
@@ -468,7 +468,7 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
             }
         }
         Command::Make(command) => return make::run(command, &budget),
-        Command::Odr(command) => return odr::run(command),
+        Command::Odr(command) => return odr::run(command, &budget),
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -1,8 +1,9 @@
 //! `opencrg odr`: OpenDRIVE maps with CRG surfaces. `info` says what a map holds, `check`
 //! applies the rules of its CRG records and roads, `eval` answers height, friction, road,
-//! s and t at world points read from stdin.
+//! s and t at world points read from stdin, `render` draws the map's heights.
 
 use clap::Subcommand;
+use opencrg::Budget;
 use opencrg_odr::{CrgMode, Map, Surface};
 use std::io::{BufRead, Write};
 use std::path::{Path, PathBuf};
@@ -29,6 +30,16 @@ pub enum OdrCommand {
     Eval {
         /// The OpenDRIVE map (.xodr).
         map: PathBuf,
+    },
+    /// A top view of the map's roads coloured by height, CRG records laid on, with a scale bar.
+    Render {
+        /// The OpenDRIVE map (.xodr).
+        map: PathBuf,
+        /// The PNG file to write.
+        output: PathBuf,
+        /// Pixels on the longer side of the picture (16 to 20000).
+        #[arg(long, default_value_t = 1200)]
+        size: usize,
     },
 }
 
@@ -170,8 +181,62 @@ fn eval(path: &Path) -> Result<(), String> {
     out.flush().map_err(io)
 }
 
+/// The extent of the map's roads (x0, y0, x1, y1), their lanes included.
+fn extent(surface: &Surface) -> Option<[f64; 4]> {
+    let mut e = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
+    for road in &surface.map().roads {
+        let n = (road.length / 2.0).ceil().clamp(1.0, 10_000.0) as usize;
+        for k in 0..=n {
+            let s = road.length * k as f64 / n as f64;
+            let Some((section, ds)) = road.lanes.section_at(s) else { continue };
+            let offset = road.lanes.offset.at(s);
+            let ts = [true, false].into_iter().flat_map(|left| section.spans(left, ds, offset).last().map(|l| l.outer));
+            for t in ts.chain([0.0]) {
+                let [x, y, _] = road.surface_point(s, t);
+                if x.is_finite() && y.is_finite() {
+                    e = [e[0].min(x), e[1].min(y), e[2].max(x), e[3].max(y)];
+                }
+            }
+        }
+    }
+    e[0].is_finite().then_some(e)
+}
+
+fn render(path: &Path, output: &Path, size: usize, budget: &Budget) -> Result<(), String> {
+    if !(16..=crate::render::MAX_SIZE).contains(&size) {
+        return Err(format!(
+            "--size {size} px: the longer side of a picture takes 16 to {} px",
+            crate::render::MAX_SIZE
+        ));
+    }
+    let surface = Arc::new(Surface::load(path).map_err(|e| e.to_string())?);
+    let [x0, y0, x1, y1] = extent(&surface).ok_or_else(|| format!("{}: no road to draw", path.display()))?;
+    let px = (x1 - x0).max(y1 - y0).max(1e-6) / size as f64;
+    let (mw, mh) = ((((x1 - x0) / px).ceil() as usize).max(1), (((y1 - y0) / px).ceil() as usize).max(1));
+    let request = format!("a map picture of {mw} x {mh} px");
+    budget.admit(&request, mw as f64 * mh as f64, "pixels", crate::render::PIXEL_BYTES).map_err(|e| e.to_string())?;
+    let bar = indicatif::ProgressBar::new(mh as u64);
+    let mut z = vec![None; mw * mh];
+    let mut probe = surface.probe();
+    for row in 0..mh {
+        let y = y1 - (row as f64 + 0.5) * px;
+        // Alternate the direction so each wheel of the scan stays on its road.
+        let cols: Box<dyn Iterator<Item = usize>> =
+            if row % 2 == 0 { Box::new(0..mw) } else { Box::new((0..mw).rev()) };
+        for col in cols {
+            let x = x0 + (col as f64 + 0.5) * px;
+            z[row * mw + col] = probe.ground(x, y).map(|g| g.z);
+        }
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    crate::render::height_picture(&z, mw, mh, px).write_png(output)?;
+    eprintln!("{}: {mw} x {mh} px, {px:.3} m a pixel", output.display());
+    Ok(())
+}
+
 /// Runs an `odr` command; the exit status.
-pub fn run(command: OdrCommand) -> Result<ExitCode, String> {
+pub fn run(command: OdrCommand, budget: &Budget) -> Result<ExitCode, String> {
     match command {
         OdrCommand::Info { map, json } => info(&load(&map)?, json)?,
         OdrCommand::Check { map } => {
@@ -187,6 +252,7 @@ pub fn run(command: OdrCommand) -> Result<ExitCode, String> {
             println!("{}: passes the checks", map.display());
         }
         OdrCommand::Eval { map } => eval(&map)?,
+        OdrCommand::Render { map, output, size } => render(&map, &output, size, budget)?,
     }
     Ok(ExitCode::SUCCESS)
 }

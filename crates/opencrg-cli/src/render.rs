@@ -10,7 +10,7 @@ const SCALE_ROOM: usize = 44;
 const MARGIN: usize = 12;
 /// The memory a pixel of the top view takes while it is made (elevation, slope, colour,
 /// the encoded picture).
-const PIXEL_BYTES: f64 = 32.0;
+pub(crate) const PIXEL_BYTES: f64 = 32.0;
 /// The longest side of a top view, in pixels.
 pub const MAX_SIZE: usize = 20_000;
 
@@ -119,6 +119,13 @@ pub fn top_view(cp: &mut ContactPoint, size: usize, budget: &Budget, progress: &
             }
         }
     }
+    Ok(height_picture(&z, mw, mh, px))
+}
+
+/// The picture of heights `z` on a raster of `mw` x `mh` pixels of `px` metres each (row
+/// by row from the north; `None` off the surface, NaN where it has no height): coloured
+/// by height with hill shading, a colour bar in metres and a scale bar.
+pub(crate) fn height_picture(z: &[Option<f64>], mw: usize, mh: usize, px: f64) -> Canvas {
     let finite = || z.iter().flatten().copied().filter(|v| v.is_finite());
     let (zmin, zmax) = finite().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)));
     let zspan = if zmax > zmin { zmax - zmin } else { 1.0 };
@@ -181,7 +188,7 @@ pub fn top_view(cp: &mut ContactPoint, size: usize, budget: &Budget, progress: &
     canvas.fill(sx, sy - 4, 1, 12, BLACK);
     canvas.fill(sx + bar.max(1) - 1, sy - 4, 1, 12, BLACK);
     canvas.text(sx, sy + 10, &format!("{length} m"), 1, BLACK);
-    Ok(canvas)
+    canvas
 }
 
 /// Which section a profile shows.

@@ -132,3 +132,25 @@ fn eval_answers_with_the_crg_records_laid_on() {
         }
     }
 }
+
+#[test]
+fn render_draws_the_map() {
+    let d = dir("render");
+    let out = d.join("town.png");
+    let status =
+        opencrg(&["odr", "render", &shared("esmini/fabriksgatan.xodr"), out.to_str().unwrap(), "--size", "300"], "");
+    assert!(status.status.success(), "{}", String::from_utf8_lossy(&status.stderr));
+    let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(&out).unwrap()));
+    let mut reader = decoder.read_info().unwrap();
+    let mut buf = vec![0; reader.output_buffer_size()];
+    let info = reader.next_frame(&mut buf).unwrap();
+    // The map's 300 px on its longer side, the margins, the colour and scale bars' room.
+    let longer = info.width.max(info.height);
+    assert!((300..=300 + 200).contains(&longer), "{} x {}", info.width, info.height);
+    // Road pixels (not white) and the background (white) both present.
+    let pixels: Vec<&[u8]> = buf[..info.buffer_size()].chunks(info.line_size / info.width as usize).collect();
+    assert!(pixels.iter().any(|p| p[..3] != [255, 255, 255]) && pixels.iter().any(|p| p[..3] == [255, 255, 255]));
+    let refused =
+        opencrg(&["odr", "render", &shared("esmini/fabriksgatan.xodr"), out.to_str().unwrap(), "--size", "4"], "");
+    assert_eq!(refused.status.code(), Some(2));
+}
