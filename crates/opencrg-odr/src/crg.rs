@@ -76,26 +76,27 @@ impl CrgFiles {
 }
 
 /// A contact point on each CRG file, kept by whoever evaluates (one per wheel or thread):
-/// their x/y search histories follow the wheel.
+/// their x/y search histories follow the wheel. All are made with the probe, so that its
+/// queries allocate nothing.
 pub(crate) struct CrgPoints {
-    whole: Vec<Option<ContactPoint>>,
-    grid: Vec<Option<ContactPoint>>,
+    whole: Vec<ContactPoint>,
+    grid: Vec<ContactPoint>,
 }
 
 impl CrgPoints {
     pub fn new(files: &CrgFiles) -> CrgPoints {
         CrgPoints {
-            whole: files.files.iter().map(|_| None).collect(),
-            grid: files.files.iter().map(|_| None).collect(),
+            whole: files.files.iter().map(|f| ContactPoint::new(f.whole.clone())).collect(),
+            grid: files.files.iter().map(|f| ContactPoint::new(f.grid.clone())).collect(),
         }
     }
 
-    fn whole(&mut self, files: &CrgFiles, k: usize) -> &mut ContactPoint {
-        self.whole[k].get_or_insert_with(|| ContactPoint::new(files.files[k].whole.clone()))
+    fn whole(&mut self, k: usize) -> &mut ContactPoint {
+        &mut self.whole[k]
     }
 
-    fn grid(&mut self, files: &CrgFiles, k: usize) -> &mut ContactPoint {
-        self.grid[k].get_or_insert_with(|| ContactPoint::new(files.files[k].grid.clone()))
+    fn grid(&mut self, k: usize) -> &mut ContactPoint {
+        &mut self.grid[k]
     }
 }
 
@@ -117,9 +118,9 @@ pub(crate) fn value(
                 (u, v) = (-u, -v);
             }
             if record.mode == CrgMode::Attached {
-                points.grid(files, k).uv_to_z(u, v).map(|z| z - files.files[k].base)
+                points.grid(k).uv_to_z(u, v).map(|z| z - files.files[k].base)
             } else {
-                points.whole(files, k).uv_to_z(u, v)
+                points.whole(k).uv_to_z(u, v)
             }
         }
         CrgMode::Genuine => {
@@ -129,11 +130,11 @@ pub(crate) fn value(
             let line = files.files[k].whole.reference_line();
             let a = at.hdg + record.h_offset - line.phi_first;
             let (xc, yc) = turned(a, x - x0, y - y0);
-            points.whole(files, k).xy_to_z(xc + line.x_first, yc + line.y_first)
+            points.whole(k).xy_to_z(xc + line.x_first, yc + line.y_first)
         }
         CrgMode::Global => {
             let (xc, yc) = turned(record.h_offset, x - record.x_offset, y - record.y_offset);
-            points.whole(files, k).xy_to_z(xc, yc)
+            points.whole(k).xy_to_z(xc, yc)
         }
     };
     found.unwrap_or(f64::NAN)
