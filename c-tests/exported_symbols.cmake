@@ -1,16 +1,20 @@
 # Compares the functions the shared library exports (nm -D --defined-only) with the
-# functions crgBaseLib.h declares; fails on any difference either way, and on any
-# name that does not start with crg.
-# usage: cmake -DLIBRARY=libopencrg.so -DHEADER=crgBaseLib.h -P exported_symbols.cmake
+# functions its headers declare (crgBaseLib.h, crgOdr.h); fails on any difference either
+# way, and on any name that does not start with crg.
+# usage: cmake -DLIBRARY=libopencrg.so "-DHEADERS=crgBaseLib.h;crgOdr.h" -P exported_symbols.cmake
 execute_process(COMMAND nm -D --defined-only "${LIBRARY}" OUTPUT_VARIABLE nm_out RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
     message(FATAL_ERROR "nm failed on ${LIBRARY}")
 endif()
 string(REGEX MATCHALL "[0-9a-f]+ [TtWwDdBbRrVv] [A-Za-z_][A-Za-z_0-9]*" exported "${nm_out}")
 list(TRANSFORM exported REPLACE "^[0-9a-f]+ [A-Za-z] " "")
-file(READ "${HEADER}" header)
-# Declarations: a return type, the name, an opening parenthesis, at the start of a line.
-string(REGEX MATCHALL "\n[A-Za-z_][A-Za-z_0-9 ]*[ *]+([A-Za-z_][A-Za-z_0-9]*)\\(" declared "${header}")
+set(declared "")
+foreach(one_header ${HEADERS})
+    file(READ "${one_header}" header)
+    # Declarations: a return type, the name, an opening parenthesis, at the start of a line.
+    string(REGEX MATCHALL "\n[A-Za-z_][A-Za-z_0-9 ]*[ *]+([A-Za-z_][A-Za-z_0-9]*)\\(" found "${header}")
+    list(APPEND declared ${found})
+endforeach()
 list(TRANSFORM declared REPLACE ".*[ *]([A-Za-z_][A-Za-z_0-9]*)\\($" "\\1")
 list(SORT exported)
 list(REMOVE_DUPLICATES exported)
@@ -18,7 +22,7 @@ list(SORT declared)
 list(REMOVE_DUPLICATES declared)
 list(LENGTH declared n)
 if(n LESS 50)
-    message(FATAL_ERROR "found only ${n} declarations in ${HEADER}: ${declared}")
+    message(FATAL_ERROR "found only ${n} declarations in ${HEADERS}: ${declared}")
 endif()
 set(extra ${exported})
 list(REMOVE_ITEM extra ${declared})

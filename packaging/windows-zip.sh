@@ -16,7 +16,7 @@ rm -rf "$stage" "$stage.zip"
 mkdir -p "$stage/bin" "$stage/lib/cmake/OpenCRG" "$stage/include"
 cp "$built/opencrg.dll" "$built/opencrg.exe" "$stage/bin/"
 cp "$built/opencrg.lib" "$built/libopencrg.dll.a" "$built/libopencrg.a" "$built/opencrg.def" "$stage/lib/"
-cp include/crgBaseLib.h include/crgBaseLibPrivate.h "$stage/include/"
+cp include/crgBaseLib.h include/crgBaseLibPrivate.h include/crgOdr.h "$stage/include/"
 cp packaging/windows/OpenCRGConfig.cmake "$stage/lib/cmake/OpenCRG/"
 cmake -DVERSION="$version" -DCMAKE_SIZEOF_VOID_P=8 -DOUT="$stage/lib/cmake/OpenCRG/OpenCRGConfigVersion.cmake" \
     -P packaging/windows/version.cmake

@@ -4,8 +4,8 @@
 //!   library, so programs linked in the build tree find it at run time;
 //! - Windows: the import library for MSVC's linker, `opencrg.lib` (rustc writes
 //!   `libopencrg.dll.a` for MinGW itself), and the module-definition file `opencrg.def`,
-//!   both of exactly the functions `crgBaseLib.h` declares, made from the header and
-//!   written beside the DLL.
+//!   both of exactly the functions `crgBaseLib.h` and `crgOdr.h` declare, made from the
+//!   headers and written beside the DLL.
 use std::path::{Path, PathBuf};
 
 fn main() {
@@ -36,14 +36,17 @@ fn linux(profile_dir: Option<PathBuf>) {
 }
 
 fn windows(manifest: &Path, profile_dir: Option<PathBuf>) {
-    let header = manifest.join("../../include/crgBaseLib.h");
-    println!("cargo:rerun-if-changed={}", header.display());
-    let text = std::fs::read_to_string(&header).unwrap_or_else(|e| panic!("{}: {e}", header.display()));
+    let mut text = String::new();
+    for name in ["crgBaseLib.h", "crgOdr.h"] {
+        let header = manifest.join("../../include").join(name);
+        println!("cargo:rerun-if-changed={}", header.display());
+        text += &std::fs::read_to_string(&header).unwrap_or_else(|e| panic!("{}: {e}", header.display()));
+    }
     let mut names: Vec<&str> = text.lines().filter_map(declared_function).collect();
     names.sort_unstable();
     names.dedup();
-    assert!(names.len() > 50, "{}: only {} function declarations found", header.display(), names.len());
-    let mut def = String::from("; The functions of crgBaseLib.h, made from the header by crates/opencrg-capi/build.rs.\nLIBRARY opencrg.dll\nEXPORTS\n");
+    assert!(names.len() > 50, "only {} function declarations found in the headers", names.len());
+    let mut def = String::from("; The functions of crgBaseLib.h and crgOdr.h, made from the headers by crates/opencrg-capi/build.rs.\nLIBRARY opencrg.dll\nEXPORTS\n");
     for name in &names {
         def.push_str("    ");
         def.push_str(name);

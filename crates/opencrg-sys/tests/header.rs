@@ -55,3 +55,35 @@ fn setting_constants_match_the_settings_table() {
     let size = defines(&header, "dCrgSizeOptList");
     assert_eq!(size, [("dCrgSizeOptList".to_string(), (opencrg::settings::TABLE_SIZE - 1).to_string())]);
 }
+
+/// The functions a header declares: a name followed by `(` after a return type, at the
+/// start of a line.
+fn declared(header: &str, prefix: &str) -> Vec<String> {
+    let mut names: Vec<String> = header
+        .lines()
+        .filter(|l| l.starts_with("int ") || l.starts_with("void ") || l.starts_with("const "))
+        .filter_map(|l| l.split('(').next()?.split([' ', '*']).next_back().map(str::to_string))
+        .filter(|n| n.starts_with(prefix))
+        .collect();
+    names.sort();
+    names
+}
+
+#[test]
+fn the_opendrive_header_declares_exactly_the_opendrive_calls() {
+    let crate_dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let header = std::fs::read_to_string(crate_dir.join("../../include/crgOdr.h")).unwrap();
+    let source = std::fs::read_to_string(crate_dir.join("src/odr.rs")).unwrap();
+    let mut exported: Vec<String> = source
+        .lines()
+        .filter_map(|l| l.split("extern \"C\" fn ").nth(1))
+        .filter_map(|rest| rest.split('(').next().map(str::to_string))
+        .collect();
+    exported.sort();
+    let in_header = declared(&header, "crgOdr");
+    assert!(exported.len() >= 8, "{exported:?}");
+    assert_eq!(in_header, exported);
+    // None of them in the classic header.
+    let classic = std::fs::read_to_string(crate_dir.join("../../include/crgBaseLib.h")).unwrap();
+    assert!(!classic.contains("crgOdr"));
+}
