@@ -72,7 +72,7 @@ fuzz_target!(|input: &[u8]| {
         }
     }
     if take_u8(&mut d) & 1 == 1 {
-        cp.set_history(usize::from(take_u8(&mut d) % 8));
+        let _ = cp.set_history(usize::from(take_u8(&mut d) % 8));
     }
     while d.len() >= 16 {
         let (u, v) = (take_f64(&mut d), take_f64(&mut d));

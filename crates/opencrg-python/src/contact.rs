@@ -64,7 +64,7 @@ impl ContactPoint {
         };
         let mut inner = crg::ContactPoint::new(shared);
         if let Some(size) = history {
-            inner.set_history(size);
+            inner.set_history(size).map_err(crate::errors::to_py)?;
         }
         set_options(&mut inner, options)?;
         Ok(ContactPoint { road: road.unbind(), seen, inner })
@@ -100,8 +100,8 @@ impl ContactPoint {
     }
 
     /// Gives the x/y search history `size` entries (emptied).
-    fn set_history(&mut self, size: usize) {
-        self.inner.set_history(size);
+    fn set_history(&mut self, size: usize) -> PyResult<()> {
+        self.inner.set_history(size).map_err(crate::errors::to_py)
     }
 
     fn __repr__(&self) -> String {

@@ -47,6 +47,7 @@ ABSURD = [
     ("to_mesh max_memory=1000", lambda r: r.to_mesh(max_memory=1000), ["vertices", "the limit is"]),
     ("to_mesh max_error max_memory", lambda r: r.to_mesh(max_error=0.001, max_memory=1000), ["lattice points"]),
     ("cut u=(1e300, 2e300)", lambda r: r.cut((1e300, 2e300)), ["1e300:2e300"]),
+    ("ContactPoint history=2**62", lambda r: opencrg.ContactPoint(r, history=2**62), ["search history"]),
 ]
 
 

@@ -722,10 +722,13 @@ pub extern "C" fn crgContactPointSetDefaultOptions(cpId: c_int) {
 #[no_mangle]
 pub extern "C" fn crgContactPointSetHistory(cpId: c_int, histSize: c_int) -> c_int {
     cp_call("crgContactPointSetHistory", cpId, 0, |cp| match usize::try_from(histSize) {
-        Ok(n) => {
-            cp.set_history(n);
-            1
-        }
+        Ok(n) => match cp.set_history(n) {
+            Ok(()) => 1,
+            Err(e) => {
+                msg::warn(&format!("crgContactPointSetHistory: {e}"));
+                0
+            }
+        },
         Err(_) => 0,
     })
 }
@@ -735,7 +738,11 @@ pub extern "C" fn crgContactPointSetHistory(cpId: c_int, histSize: c_int) -> c_i
 pub extern "C" fn crgContactPointSetHistoryForAllPoints(histSize: c_int) {
     guard("crgContactPointSetHistoryForAllPoints", (), || {
         if let Ok(n) = usize::try_from(histSize) {
-            registry::update_all_cps(|cp| cp.set_history(n));
+            registry::update_all_cps(|cp| {
+                if let Err(e) = cp.set_history(n) {
+                    msg::warn(&format!("crgContactPointSetHistoryForAllPoints: {e}"));
+                }
+            });
         }
     })
 }

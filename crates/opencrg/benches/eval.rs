@@ -39,7 +39,7 @@ fn search_scaling() {
         let xy: Vec<(f64, f64)> =
             (0..n).map(|_| probe.uv_to_xy(length * rng.next(), 2.0 * rng.next() - 1.0).expect("inside")).collect();
         let mut cp = ContactPoint::new(road);
-        cp.set_history(0);
+        cp.set_history(0).unwrap();
         time("xy_to_uv (no history)", &format!("winding {km} km"), n, |i| {
             black_box(cp.xy_to_uv(xy[i].0, xy[i].1).unwrap());
         });
@@ -74,7 +74,7 @@ fn main() {
             black_box(cp.uv_to_pk(pts[i].0, pts[i].1).unwrap());
         });
         let mut fresh = ContactPoint::new(road.clone());
-        fresh.set_history(0);
+        fresh.set_history(0).unwrap();
         time("xy_to_uv (no history)", name, n / 10, |i| {
             black_box(fresh.xy_to_uv(xy[i].0, xy[i].1).unwrap());
         });

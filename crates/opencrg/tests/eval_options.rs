@@ -154,7 +154,7 @@ fn circle_heading_curvature_and_search() {
 #[test]
 fn search_history_options() {
     let mut c = cp(circle());
-    c.set_history(3);
+    c.set_history(3).unwrap();
     c.set_option_double(opt::REFLINE_SEARCH_U, 60.0).unwrap();
     let (x, y) = c.uv_to_xy(61.0, 0.5).unwrap();
     let (u, _) = c.xy_to_uv(x, y).unwrap();

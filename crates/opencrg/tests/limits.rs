@@ -142,3 +142,13 @@ fn lines_through_points_beyond_the_finite_are_refused() {
         }
     }
 }
+
+#[test]
+fn a_search_history_beyond_memory_is_refused_and_the_old_one_kept() {
+    let mut cp = ContactPoint::new(road());
+    cp.set_history(5).unwrap();
+    let e = cp.set_history(usize::MAX / 2).unwrap_err().to_string();
+    assert!(e.contains("search history") && e.contains("refused the memory"), "{e}");
+    assert_eq!(cp.search_history().size, 5);
+    assert!(cp.uv_to_z(10.0, 0.5).is_ok());
+}

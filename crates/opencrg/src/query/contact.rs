@@ -166,8 +166,14 @@ impl ContactPoint {
     /// Gives the history `size` entries (emptied). The close and far distances stay:
     /// the reference meant to reset them to 10 and 100 u increments, but its test for
     /// that never passes, and its answers follow what it does.
-    pub fn set_history(&mut self, size: usize) {
-        self.history.resize(size);
+    pub fn set_history(&mut self, size: usize) -> Result<()> {
+        if self.history.resize(size) {
+            Ok(())
+        } else {
+            Err(crate::Error::Request(format!(
+                "a search history of {size} entries: the system refused the memory; the history is unchanged"
+            )))
+        }
     }
 
     /// The x/y search history as it stands.

@@ -75,12 +75,19 @@ impl History {
         }
     }
 
-    /// Empties the history and gives it `size` entries.
-    pub(crate) fn resize(&mut self, size: usize) {
+    /// Empties the history and gives it `size` entries; `false` (the history as it was)
+    /// when the system does not give the memory.
+    pub(crate) fn resize(&mut self, size: usize) -> bool {
+        let mut ring = Vec::new();
+        if ring.try_reserve_exact(size).is_err() {
+            return false;
+        }
+        ring.resize(size, Entry::default());
         self.newest = NO_ENTRY;
-        self.ring = vec![Entry::default(); size];
+        self.ring = ring;
         self.head = 0;
         self.used = 0;
+        true
     }
 
     /// Sets the distance under which an entry is a close hit.
