@@ -6,7 +6,7 @@
 use crate::map::{CrgMode, CrgOrientation, CrgRecord, Map, Road};
 use opencrg::tools::{change_channel, ChannelAction, LineChannel};
 use opencrg::{ContactPoint, Error, Location, Result};
-use std::collections::HashMap;
+use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::sync::Arc;
 
@@ -25,7 +25,8 @@ pub(crate) struct CrgFile {
 #[derive(Default)]
 pub(crate) struct CrgFiles {
     pub files: Vec<CrgFile>,
-    by_path: HashMap<PathBuf, usize>,
+    /// Each file's index by path (a B-tree: see `Map`'s index of roads).
+    by_path: BTreeMap<PathBuf, usize>,
 }
 
 /// Reads a CRG file for a map: its modifiers only if it gives some.

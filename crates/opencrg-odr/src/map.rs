@@ -4,7 +4,7 @@
 use crate::geometry::Geometry;
 use crate::lanes::Lanes;
 use crate::profile::{Cubic, Profile};
-use std::collections::HashMap;
+use std::collections::BTreeMap;
 use std::path::PathBuf;
 
 /// How a CRG record lays its file on the road (`mode`).
@@ -150,8 +150,9 @@ pub struct Map {
     pub roads: Vec<Road>,
     /// Its junctions, in the file's order.
     pub junctions: Vec<Junction>,
-    /// Each road's index by id.
-    by_id: HashMap<String, usize>,
+    /// Each road's index by id (a B-tree, not a hash map: no random state, whose source
+    /// would make the Windows DLL import bcryptprimitives.dll).
+    by_id: BTreeMap<String, usize>,
 }
 
 impl Map {
