@@ -291,28 +291,36 @@ fn number(v: Option<f64>) -> String {
     }
 }
 
-/// Reads point lines from stdin and writes the CSV.
-fn eval(cp: &mut ContactPoint, xy: bool) -> Result<(), Failure> {
-    let stdin = std::io::stdin();
-    let stdout = std::io::stdout();
-    let mut out = std::io::BufWriter::new(stdout.lock());
-    let io = |e: std::io::Error| format!("stdout: {e}");
-    writeln!(out, "{}", if xy { "x,y,u,v,z,phi,curv" } else { "u,v,x,y,z,phi,curv" }).map_err(io)?;
-    for (k, line) in stdin.lock().lines().enumerate() {
+/// Calls `each` with the two numbers of every line of stdin (blank lines and `#`
+/// comments skipped; numbers split by blanks or commas); refused: a line that is not two
+/// numbers, named by its number.
+pub(crate) fn stdin_pairs(mut each: impl FnMut(f64, f64) -> Result<(), Failure>) -> Result<(), Failure> {
+    for (k, line) in std::io::stdin().lock().lines().enumerate() {
         let line = line.map_err(|e| format!("stdin: {e}"))?;
         let text = line.trim();
         if text.is_empty() || text.starts_with('#') {
             continue;
         }
+        let bad = || format!("stdin:{}: '{text}' is not two numbers", k + 1);
         let values: Vec<f64> = text
             .split(|c: char| c.is_whitespace() || c == ',')
             .filter(|s| !s.is_empty())
-            .map(|s| s.parse::<f64>())
+            .map(str::parse)
             .collect::<Result<_, _>>()
-            .map_err(|_| format!("stdin:{}: '{text}' is not two numbers", k + 1))?;
-        let [a, b] = values[..] else {
-            return Err(format!("stdin:{}: '{text}' is not two numbers", k + 1));
-        };
+            .map_err(|_| bad())?;
+        let [a, b] = values[..] else { return Err(bad()) };
+        each(a, b)?;
+    }
+    Ok(())
+}
+
+/// Reads point lines from stdin and writes the CSV.
+fn eval(cp: &mut ContactPoint, xy: bool) -> Result<(), Failure> {
+    let stdout = std::io::stdout();
+    let mut out = std::io::BufWriter::new(stdout.lock());
+    let io = |e: std::io::Error| format!("stdout: {e}");
+    writeln!(out, "{}", if xy { "x,y,u,v,z,phi,curv" } else { "u,v,x,y,z,phi,curv" }).map_err(io)?;
+    stdin_pairs(|a, b| {
         let (u, v, x, y) = if xy {
             let (u, v) = cp.xy_to_uv(a, b).map_or((None, None), |(u, v)| (Some(u), Some(v)));
             (u, v, Some(a), Some(b))
@@ -327,8 +335,8 @@ fn eval(cp: &mut ContactPoint, xy: bool) -> Result<(), Failure> {
         };
         let fields = if xy { [x, y, u, v] } else { [u, v, x, y] };
         let row: Vec<String> = fields.into_iter().chain([z, pk.map(|p| p.0), pk.map(|p| p.1)]).map(number).collect();
-        writeln!(out, "{}", row.join(",")).map_err(io)?;
-    }
+        writeln!(out, "{}", row.join(",")).map_err(io)
+    })?;
     out.flush().map_err(io)
 }
 

@@ -5,7 +5,7 @@
 use clap::Subcommand;
 use opencrg::Budget;
 use opencrg_odr::{CrgMode, Map, Surface};
-use std::io::{BufRead, Write};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::sync::Arc;
@@ -59,17 +59,6 @@ fn mode_name(m: CrgMode) -> &'static str {
 /// The map's facts as JSON.
 fn facts(map: &Map) -> serde_json::Value {
     let length: f64 = map.roads.iter().map(|r| r.length).sum();
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for road in &map.roads {
-        let n = (road.length / 5.0).ceil().clamp(1.0, 10_000.0) as usize;
-        for k in 0..=n {
-            let r = road.reference(road.length * k as f64 / n as f64);
-            if r.x.is_finite() && r.y.is_finite() {
-                lo = [lo[0].min(r.x), lo[1].min(r.y)];
-                hi = [hi[0].max(r.x), hi[1].max(r.y)];
-            }
-        }
-    }
     let records: Vec<serde_json::Value> = map
         .roads
         .iter()
@@ -92,7 +81,7 @@ fn facts(map: &Map) -> serde_json::Value {
         "connecting_roads": map.roads.iter().filter(|r| r.junction.is_some()).count(),
         "junctions": map.junctions.len(),
         "length": length,
-        "extent": if lo[0].is_finite() { serde_json::json!({"x": [lo[0], hi[0]], "y": [lo[1], hi[1]]}) } else { serde_json::Value::Null },
+        "extent": extent(map).map_or(serde_json::Value::Null, |[x0, y0, x1, y1]| serde_json::json!({"x": [x0, x1], "y": [y0, y1]})),
         "crg_records": records,
     })
 }
@@ -154,37 +143,23 @@ fn number(x: f64) -> String {
 fn eval(path: &Path) -> Result<(), String> {
     let surface = Arc::new(Surface::load(path).map_err(|e| e.to_string())?);
     let mut probe = surface.probe();
-    let stdin = std::io::stdin();
     let mut out = std::io::BufWriter::new(std::io::stdout().lock());
     let io = |e: std::io::Error| format!("stdout: {e}");
-    for (k, line) in stdin.lock().lines().enumerate() {
-        let line = line.map_err(|e| format!("stdin: {e}"))?;
-        let text = line.trim();
-        if text.is_empty() || text.starts_with('#') {
-            continue;
+    crate::stdin_pairs(|x, y| match probe.ground(x, y) {
+        Some(g) => {
+            let road = &surface.map().roads[g.road].id;
+            writeln!(out, "{} {} {road} {} {}", number(g.z), number(g.friction), g.s, g.t).map_err(io)
         }
-        let values: Vec<f64> = text
-            .split(|c: char| c.is_whitespace() || c == ',')
-            .filter(|s| !s.is_empty())
-            .map(str::parse)
-            .collect::<Result<_, _>>()
-            .map_err(|_| format!("stdin:{}: '{text}' is not two numbers", k + 1))?;
-        let [x, y] = values[..] else { return Err(format!("stdin:{}: '{text}' is not two numbers", k + 1)) };
-        match probe.ground(x, y) {
-            Some(g) => {
-                let road = &surface.map().roads[g.road].id;
-                writeln!(out, "{} {} {road} {} {}", number(g.z), number(g.friction), g.s, g.t).map_err(io)?;
-            }
-            None => writeln!(out, "nan nan - nan nan").map_err(io)?,
-        }
-    }
+        None => writeln!(out, "nan nan - nan nan").map_err(io),
+    })?;
     out.flush().map_err(io)
 }
 
-/// The extent of the map's roads (x0, y0, x1, y1), their lanes included.
-fn extent(surface: &Surface) -> Option<[f64; 4]> {
+/// The extent of the map's roads (x0, y0, x1, y1), their lanes included, from their
+/// outermost borders every 2 m (at most 10,000 cross sections a road).
+fn extent(map: &Map) -> Option<[f64; 4]> {
     let mut e = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
-    for road in &surface.map().roads {
+    for road in &map.roads {
         let n = (road.length / 2.0).ceil().clamp(1.0, 10_000.0) as usize;
         for k in 0..=n {
             let s = road.length * k as f64 / n as f64;
@@ -210,7 +185,7 @@ fn render(path: &Path, output: &Path, size: usize, budget: &Budget) -> Result<()
         ));
     }
     let surface = Arc::new(Surface::load(path).map_err(|e| e.to_string())?);
-    let [x0, y0, x1, y1] = extent(&surface).ok_or_else(|| format!("{}: no road to draw", path.display()))?;
+    let [x0, y0, x1, y1] = extent(surface.map()).ok_or_else(|| format!("{}: no road to draw", path.display()))?;
     let px = (x1 - x0).max(y1 - y0).max(1e-6) / size as f64;
     let (mw, mh) = ((((x1 - x0) / px).ceil() as usize).max(1), (((y1 - y0) / px).ceil() as usize).max(1));
     let request = format!("a map picture of {mw} x {mh} px");

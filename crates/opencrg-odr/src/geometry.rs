@@ -115,32 +115,27 @@ impl Geometry {
                 (x, y, angle(ds), start + rate * ds)
             }
             Shape::Poly3 { coefficients } => {
-                let u = self.parameter_for(ds, &|u| (1.0, cubic_slope(&coefficients, u)), 1.0, ds);
+                let u = self.parameter_for(ds, &|u| (1.0, cubic_slope(&coefficients, u)), ds, self.length);
                 let slope = cubic_slope(&coefficients, u);
                 let bend = cubic_bend(&coefficients, u) / (1.0 + slope * slope).powf(1.5);
                 (u, cubic(&coefficients, u), slope.atan(), bend)
             }
             Shape::ParamPoly3 { u, v, normalized } => {
                 let end = if normalized { 1.0 } else { self.length };
-                let p = self.parameter_for(ds, &|p| (cubic_slope(&u, p), cubic_slope(&v, p)), end, self.length);
+                let guess = if self.length > 0.0 { ds * end / self.length } else { 0.0 };
+                let p = self.parameter_for(ds, &|p| (cubic_slope(&u, p), cubic_slope(&v, p)), guess, end);
                 let (du, dv) = (cubic_slope(&u, p), cubic_slope(&v, p));
                 let bend = (du * cubic_bend(&v, p) - dv * cubic_bend(&u, p)) / (du * du + dv * dv).powf(1.5);
-                (cubic(&u, p) - u[0], cubic(&v, p) - v[0], dv.atan2(du), bend)
+                (cubic(&u, p), cubic(&v, p), dv.atan2(du), bend)
             }
         };
         let (sin, cos) = self.hdg.sin_cos();
-        let mut pose = Pose {
+        Pose {
             x: self.x + cos * local_x - sin * local_y,
             y: self.y + sin * local_x + cos * local_y,
             hdg: self.hdg + turn,
             curvature,
-        };
-        if let Shape::ParamPoly3 { u, v, .. } = self.shape {
-            // The curve's own start offset (a terms) moves the whole record.
-            pose.x += cos * u[0] - sin * v[0];
-            pose.y += sin * u[0] + cos * v[0];
         }
-        pose
     }
 
     /// The pose `ds` after the record's start, from the pose `from` known `from_ds` after
@@ -185,21 +180,19 @@ impl Geometry {
     /// The curve parameter at distance `ds` along a cubic curve whose derivative with
     /// respect to its parameter is `tangent(p)`: the arc length from 0 to p equals `ds`
     /// (where the record's declared length and the curve's own differ, s follows the
-    /// curve).
-    fn parameter_for(&self, ds: f64, tangent: &dyn Fn(f64) -> (f64, f64), end: f64, span: f64) -> f64 {
+    /// curve). Newton's method from `guess`; `range` is the parameter's whole range.
+    fn parameter_for(&self, ds: f64, tangent: &dyn Fn(f64) -> (f64, f64), guess: f64, range: f64) -> f64 {
         let speed = |p: f64| {
             let (a, b) = tangent(p);
             a.hypot(b)
         };
         // Up to eight pieces over the whole curve: the speed of a cubic is smooth.
-        let arc = |p: f64| integrate(speed, 0.0, p, (8.0 * (p / end).abs()).ceil().clamp(1.0, 64.0) as usize);
-        let target = ds;
-        // Newton's method from the proportional guess, kept inside a shrinking bracket.
-        let scale = if span != 0.0 { end / span } else { 1.0 };
-        let mut p = ds * scale;
+        let arc = |p: f64| integrate(speed, 0.0, p, (8.0 * (p / range).abs()).ceil().clamp(1.0, 64.0) as usize);
+        // Newton's method, kept inside a shrinking bracket.
+        let mut p = guess;
         let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
         for _ in 0..40 {
-            let f = arc(p) - target;
+            let f = arc(p) - ds;
             if f > 0.0 {
                 hi = hi.min(p);
             } else {

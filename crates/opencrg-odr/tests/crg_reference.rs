@@ -10,28 +10,16 @@
 
 use opencrg::synth::RoadSpec;
 use opencrg_odr::{Map, Surface};
-use std::io::Write;
 use std::path::Path;
-use std::process::{Command, Stdio};
 use std::sync::Arc;
+
+mod common;
 
 /// The reference's answers for one CRG file: `queries` lines "uv U V" or "xy X Y".
 fn reference(file: &Path, modifiers: &str, queries: &str) -> Vec<f64> {
     let program = std::env::var("OPENCRG_CRG_REFERENCE").expect("OPENCRG_CRG_REFERENCE names the reference's client");
-    let mut child = Command::new(program)
-        .arg(file)
-        .arg(modifiers)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap();
-    let mut stdin = child.stdin.take().unwrap();
-    let text = queries.to_string();
-    let writer = std::thread::spawn(move || stdin.write_all(text.as_bytes()));
-    let out = child.wait_with_output().unwrap();
-    writer.join().unwrap().unwrap();
-    String::from_utf8(out.stdout).unwrap().lines().map(|l| l.trim().parse().unwrap_or(f64::NAN)).collect()
+    let out = common::answers(&program, &[file.as_os_str(), modifiers.as_ref()], queries.to_string());
+    out.lines().map(|l| l.trim().parse().unwrap_or(f64::NAN)).collect()
 }
 
 /// The CRG files: `rough.crg`, a curved, climbing, banked road with its own modifiers

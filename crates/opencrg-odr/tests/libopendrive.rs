@@ -17,9 +17,9 @@
 //! libOpenDRIVE and `tests/oracle/libopendrive_answers.cpp`).
 
 use opencrg_odr::{Map, Road};
-use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+
+mod common;
 
 const TOLERANCE: f64 = 1e-3;
 
@@ -125,18 +125,7 @@ fn every_road_agrees_with_libopendrive() {
                 asked.push((ri, s, t));
             }
         }
-        let mut child = Command::new(&oracle)
-            .arg(&path)
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .stderr(Stdio::null())
-            .spawn()
-            .unwrap();
-        let mut stdin = child.stdin.take().unwrap();
-        let writer = std::thread::spawn(move || stdin.write_all(queries.as_bytes()));
-        let out = child.wait_with_output().unwrap();
-        writer.join().unwrap().unwrap();
-        let answers = String::from_utf8(out.stdout).unwrap();
+        let answers = common::answers(&oracle, &[path.as_os_str()], queries);
         let lines: Vec<&str> = answers.lines().collect();
         assert_eq!(lines.len(), asked.len(), "{}: answers", path.display());
         let name = path.file_name().unwrap().to_string_lossy().into_owned();

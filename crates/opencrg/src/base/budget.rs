@@ -116,11 +116,12 @@ impl Budget {
 
     /// "the limit is ..., half of the ... available (--max-memory raises it)".
     fn limit_text(&self) -> String {
+        let share = if Self::SHARE == 0.5 { "half".to_string() } else { format!("{:.0} %", 100.0 * Self::SHARE) };
         let basis = match self.basis {
-            Basis::Available(b) => format!(", {} of the {} this process can still get", share_words(), Bytes(b as f64)),
-            Basis::Unknown => format!(", {} of the {} assumed where the system does not say", share_words(), {
-                Bytes(Self::FALLBACK as f64)
-            }),
+            Basis::Available(b) => format!(", {share} of the {} this process can still get", Bytes(b as f64)),
+            Basis::Unknown => {
+                format!(", {share} of the {} assumed where the system does not say", Bytes(Self::FALLBACK as f64))
+            }
             Basis::Given => String::new(),
         };
         let raise = if self.raise.is_empty() { String::new() } else { format!(" ({} raises it)", self.raise) };
@@ -135,14 +136,6 @@ impl Default for Budget {
     }
 }
 
-fn share_words() -> &'static str {
-    if Budget::SHARE == 0.5 {
-        "half"
-    } else {
-        "a share"
-    }
-}
-
 /// A vector of `n` copies of `value`, or a refusal naming `what` when the system does
 /// not give the memory.
 pub(crate) fn filled<T: Clone>(n: usize, value: T, what: &str) -> Result<Vec<T>> {
@@ -153,17 +146,12 @@ pub(crate) fn filled<T: Clone>(n: usize, value: T, what: &str) -> Result<Vec<T>>
 }
 
 /// The refusal of `n` values of `T` for `what` the system did not give memory for.
-fn refused_of<T>(n: usize, what: &str) -> Error {
+pub(crate) fn refused_of<T>(n: usize, what: &str) -> Error {
     Error::Request(format!(
         "{what}: the system refused the memory for {} values ({})",
         Count(n as f64),
         Bytes(n as f64 * std::mem::size_of::<T>() as f64)
     ))
-}
-
-/// [`refused_of`] for values of 24 bytes (points with three coordinates).
-pub(crate) fn refused(n: usize, what: &str) -> Error {
-    refused_of::<[f64; 3]>(n, what)
 }
 
 /// A count as people read it: digits grouped by thousands up to 10^15, beyond that in

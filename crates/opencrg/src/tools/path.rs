@@ -3,7 +3,7 @@
 //! and the walk along a polyline that puts points exactly one step apart, as a
 //! reference line's heading channel places its cross sections.
 
-use crate::budget::{filled, refused};
+use crate::budget::{filled, refused_of};
 use crate::error::Result;
 
 /// A point found by [`chord_walk`]: x, y and the polyline's parameter there.
@@ -22,7 +22,7 @@ pub(crate) fn chord_walk(x: &[f64], y: &[f64], t: &[f64], step: f64) -> Result<V
     let n = x.len();
     let mut out = Vec::new();
     let expected = 1 + (t[n - 1] - t[0]).abs().div_euclid(step) as usize;
-    out.try_reserve_exact(expected).map_err(|_| refused(expected, "the reference line's cross sections"))?;
+    out.try_reserve_exact(expected).map_err(|_| refused_of::<Stop>(expected, "the reference line's cross sections"))?;
     let (mut cx, mut cy) = (x[0], y[0]);
     out.push(Stop { x: cx, y: cy, t: t[0] });
     let mut seg = 0;
