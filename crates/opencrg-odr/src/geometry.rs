@@ -3,6 +3,7 @@
 //! precision.
 
 use crate::quadrature::{integrate, integrate_pair, points_for_turn};
+use crate::trig;
 
 /// The shape of one record.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -87,16 +88,79 @@ fn pieces(turn: f64, length: f64) -> usize {
     (turn.abs().max(length.abs() / 100.0).ceil() as usize).clamp(1, 4096)
 }
 
+/// The largest turn (rad) between two stations for which [`turned_path`] is exact to
+/// rounding.
+const CLOSED_TURN: f64 = 1e-3;
+
+/// Where a path turning by `a s + b s^2` (s from 0 to 1 over the length `length`) ends,
+/// in the frame of its start: the integrals of cos and sin of the turn by their series,
+/// the turn's powers integrated in closed form. Exact to rounding while the turn stays
+/// within [`CLOSED_TURN`] (the first terms left out are below 1e-17 of the length).
+fn turned_path(a: f64, b: f64, length: f64) -> (f64, f64) {
+    // The integrals over 0..1 of (a s + b s^2)^n.
+    let (a2, b2, ab) = (a * a, b * b, a * b);
+    const THIRD: f64 = 1.0 / 3.0;
+    let i1 = 0.5 * a + THIRD * b;
+    let i2 = THIRD * a2 + 0.5 * ab + 0.2 * b2;
+    let i3 = 0.25 * a * a2 + 0.6 * a2 * b + 0.5 * ab * b + (1.0 / 7.0) * b * b2;
+    let i4 = 0.2 * a2 * a2 + (2.0 / 3.0) * a2 * ab + (6.0 / 7.0) * a2 * b2 + 0.5 * ab * b2 + (1.0 / 9.0) * b2 * b2;
+    (length * (1.0 - 0.5 * i2 + (1.0 / 24.0) * i4), length * (i1 - (1.0 / 6.0) * i3))
+}
+
+/// A pose of a record with what moving on from it cheaply needs: its distance from the
+/// record's start, the heading's sine and cosine, and on cubic curves the curve's parameter.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Station {
+    /// Its distance from the record's start.
+    pub ds: f64,
+    /// The pose.
+    pub pose: Pose,
+    /// The heading's sine.
+    pub sin: f64,
+    /// The heading's cosine.
+    pub cos: f64,
+    /// The curve's parameter (poly3: u, paramPoly3: p; 0 on other shapes).
+    param: f64,
+    /// Sine and cosine of the record's start heading.
+    frame: (f64, f64),
+}
+
+/// A cubic curve's point at parameter p in its record's frame: (u, v), the tangent
+/// (du/dp, dv/dp) and the curvature.
+struct CurvePoint {
+    u: f64,
+    v: f64,
+    du: f64,
+    dv: f64,
+    curvature: f64,
+}
+
 impl Geometry {
     /// The pose `ds` after the record's start (beyond its ends the shape continues).
     pub fn pose(&self, ds: f64) -> Pose {
-        let (local_x, local_y, turn, curvature) = match self.shape {
-            Shape::Line => (ds, 0.0, 0.0, 0.0),
+        self.placed(ds).0
+    }
+
+    /// The station `ds` after the record's start, computed from the record alone.
+    pub(crate) fn station(&self, ds: f64) -> Station {
+        let (pose, param, frame) = self.placed(ds);
+        let (sin, cos) = match self.shape {
+            Shape::Line => frame,
+            _ => trig::sin_cos(pose.hdg),
+        };
+        Station { ds, pose, sin, cos, param, frame }
+    }
+
+    /// The pose `ds` after the record's start, the curve's parameter there, and the sine
+    /// and cosine of the record's start heading.
+    fn placed(&self, ds: f64) -> (Pose, f64, (f64, f64)) {
+        let (local_x, local_y, turn, curvature, param) = match self.shape {
+            Shape::Line => (ds, 0.0, 0.0, 0.0, 0.0),
             Shape::Arc { curvature: k } => {
                 // The chord 2 sin(k ds / 2) / k, at half the turn: exact as k goes to 0.
                 let half = 0.5 * k * ds;
                 let chord = if k == 0.0 { ds } else { 2.0 * half.sin() / k };
-                (chord * half.cos(), chord * half.sin(), k * ds, k)
+                (chord * half.cos(), chord * half.sin(), k * ds, k, 0.0)
             }
             Shape::Spiral { start, end } => {
                 let rate = if self.length > 0.0 { (end - start) / self.length } else { 0.0 };
@@ -112,56 +176,95 @@ impl Geometry {
                     pieces(turn_rate * ds, ds),
                     16,
                 );
-                (x, y, angle(ds), start + rate * ds)
+                (x, y, angle(ds), start + rate * ds, 0.0)
             }
-            Shape::Poly3 { coefficients } => {
-                let u = self.parameter_for(ds, &|u| (1.0, cubic_slope(&coefficients, u)), ds, self.length);
-                let slope = cubic_slope(&coefficients, u);
-                let bend = cubic_bend(&coefficients, u) / (1.0 + slope * slope).powf(1.5);
-                (u, cubic(&coefficients, u), slope.atan(), bend)
-            }
-            Shape::ParamPoly3 { u, v, normalized } => {
-                let end = if normalized { 1.0 } else { self.length };
-                let guess = if self.length > 0.0 { ds * end / self.length } else { 0.0 };
-                let p = self.parameter_for(ds, &|p| (cubic_slope(&u, p), cubic_slope(&v, p)), guess, end);
-                let (du, dv) = (cubic_slope(&u, p), cubic_slope(&v, p));
-                let bend = (du * cubic_bend(&v, p) - dv * cubic_bend(&u, p)) / (du * du + dv * dv).powf(1.5);
-                (cubic(&u, p), cubic(&v, p), dv.atan2(du), bend)
+            Shape::Poly3 { .. } | Shape::ParamPoly3 { .. } => {
+                let (guess, range) = self.parameter_scale(ds);
+                let p = self.parameter_for(ds, guess, range);
+                let c = self.curve_point(p);
+                (c.u, c.v, c.dv.atan2(c.du), c.curvature, p)
             }
         };
         let (sin, cos) = self.hdg.sin_cos();
-        Pose {
+        let pose = Pose {
             x: self.x + cos * local_x - sin * local_y,
             y: self.y + sin * local_x + cos * local_y,
             hdg: self.hdg + turn,
             curvature,
-        }
+        };
+        (pose, param, (sin, cos))
     }
 
-    /// The pose `ds` after the record's start, from the pose `from` known `from_ds` after
-    /// it: for a spiral, its heading integrated over the stretch between them only, with
-    /// as few points as the stretch's turn needs (a wheel moving centimetres per step
-    /// takes two); for the other shapes [`Geometry::pose`].
-    pub fn pose_from(&self, from_ds: f64, from: Pose, ds: f64) -> Pose {
-        let Shape::Spiral { start, end } = self.shape else { return self.pose(ds) };
-        let rate = if self.length > 0.0 { (end - start) / self.length } else { 0.0 };
-        let heading = |t: f64| self.hdg + t * (start + 0.5 * rate * t);
-        let (k0, k1) = (start + rate * from_ds, start + rate * ds);
-        let turn = k0.abs().max(k1.abs()) * (ds - from_ds).abs();
-        if turn > 0.5 {
-            return self.pose(ds);
-        }
-        let (dx, dy) = integrate_pair(
-            |t| {
-                let a = heading(t);
-                (a.cos(), a.sin())
-            },
-            from_ds,
-            ds,
-            1,
-            points_for_turn(turn),
-        );
-        Pose { x: from.x + dx, y: from.y + dy, hdg: heading(ds), curvature: k1 }
+    /// The station `ds` after the record's start, reached from the station `from`
+    /// without the maths library: on a line directly; on an arc or a spiral by the turn
+    /// between them (at most [`trig::SMALL`]); on a cubic curve by the arc length from
+    /// `from`'s parameter (within an eighth of the curve). `None` beyond those bounds.
+    /// With it, whether `ds` is near `from`: the cheapest ways served (a turn within
+    /// [`CLOSED_TURN`], a 256th of a cubic curve), which a wheel moving centimetres per
+    /// step keeps to.
+    pub(crate) fn station_from(&self, from: &Station, ds: f64) -> Option<(Station, bool)> {
+        let delta = ds - from.ds;
+        let (sf, cf) = from.frame;
+        let (pose, sin, cos, param, near) = match self.shape {
+            Shape::Line => {
+                let pose = Pose { x: self.x + cf * ds, y: self.y + sf * ds, hdg: self.hdg, curvature: 0.0 };
+                (pose, sf, cf, 0.0, true)
+            }
+            Shape::Arc { .. } | Shape::Spiral { .. } => {
+                let (start, rate) = match self.shape {
+                    Shape::Spiral { start, end } if self.length > 0.0 => (start, (end - start) / self.length),
+                    Shape::Spiral { start, .. } => (start, 0.0),
+                    Shape::Arc { curvature } => (curvature, 0.0),
+                    _ => unreachable!(),
+                };
+                let k0 = from.pose.curvature;
+                let k1 = start + rate * ds;
+                let turn = k0.abs().max(k1.abs()) * delta.abs();
+                if !(turn <= trig::SMALL) {
+                    return None;
+                }
+                let angle = |t: f64| t * (k0 + 0.5 * rate * t);
+                let (lx, ly) = if turn <= CLOSED_TURN {
+                    turned_path(k0 * delta, 0.5 * rate * delta * delta, delta)
+                } else {
+                    integrate_pair(
+                        |t| {
+                            let (s, c) = trig::small_sin_cos(angle(t));
+                            (c, s)
+                        },
+                        0.0,
+                        delta,
+                        1,
+                        points_for_turn(turn),
+                    )
+                };
+                let (st, ct) = trig::small_sin_cos(angle(delta));
+                let p = from.pose;
+                let pose = Pose {
+                    x: p.x + from.cos * lx - from.sin * ly,
+                    y: p.y + from.sin * lx + from.cos * ly,
+                    hdg: self.hdg + ds * (start + 0.5 * rate * ds),
+                    curvature: k1,
+                };
+                let (sin, cos) = (from.sin * ct + from.cos * st, from.cos * ct - from.sin * st);
+                (pose, sin, cos, 0.0, turn <= CLOSED_TURN)
+            }
+            Shape::Poly3 { .. } | Shape::ParamPoly3 { .. } => {
+                let (_, range) = self.parameter_scale(ds);
+                let (p, near) = self.parameter_near(from.param, delta, range)?;
+                let c = self.curve_point(p);
+                let pose = Pose {
+                    x: self.x + cf * c.u - sf * c.v,
+                    y: self.y + sf * c.u + cf * c.v,
+                    hdg: self.hdg + c.dv.atan2(c.du),
+                    curvature: c.curvature,
+                };
+                let n = c.du.hypot(c.dv);
+                let (tu, tv) = (c.du / n, c.dv / n);
+                (pose, sf * tu + cf * tv, cf * tu - sf * tv, p, near)
+            }
+        };
+        Some((Station { ds, pose, sin, cos, param, frame: from.frame }, near))
     }
 
     /// The length of the curve itself: for poly3 and paramPoly3 the arc length over the
@@ -171,23 +274,64 @@ impl Geometry {
         match self.shape {
             Shape::ParamPoly3 { u, v, normalized } => {
                 let end = if normalized { 1.0 } else { self.length };
-                integrate(|p| cubic_slope(&u, p).hypot(cubic_slope(&v, p)), 0.0, end, 16)
+                integrate(|p| cubic_slope(&u, p).hypot(cubic_slope(&v, p)), 0.0, end, 16, 16)
             }
             _ => self.length,
         }
     }
 
-    /// The curve parameter at distance `ds` along a cubic curve whose derivative with
-    /// respect to its parameter is `tangent(p)`: the arc length from 0 to p equals `ds`
-    /// (where the record's declared length and the curve's own differ, s follows the
-    /// curve). Newton's method from `guess`; `range` is the parameter's whole range.
-    fn parameter_for(&self, ds: f64, tangent: &dyn Fn(f64) -> (f64, f64), guess: f64, range: f64) -> f64 {
-        let speed = |p: f64| {
-            let (a, b) = tangent(p);
-            a.hypot(b)
-        };
+    /// A cubic curve's tangent (du/dp, dv/dp) at parameter p.
+    fn tangent(&self, p: f64) -> (f64, f64) {
+        match self.shape {
+            Shape::Poly3 { coefficients } => (1.0, cubic_slope(&coefficients, p)),
+            Shape::ParamPoly3 { u, v, .. } => (cubic_slope(&u, p), cubic_slope(&v, p)),
+            _ => (1.0, 0.0),
+        }
+    }
+
+    /// A cubic curve's speed |d(u, v)/dp| at parameter p.
+    fn speed(&self, p: f64) -> f64 {
+        let (a, b) = self.tangent(p);
+        a.hypot(b)
+    }
+
+    /// A cubic curve's point at parameter p.
+    fn curve_point(&self, p: f64) -> CurvePoint {
+        match self.shape {
+            Shape::Poly3 { coefficients: c } => {
+                let slope = cubic_slope(&c, p);
+                let curvature = cubic_bend(&c, p) / (1.0 + slope * slope).powf(1.5);
+                CurvePoint { u: p, v: cubic(&c, p), du: 1.0, dv: slope, curvature }
+            }
+            Shape::ParamPoly3 { u, v, .. } => {
+                let (du, dv) = (cubic_slope(&u, p), cubic_slope(&v, p));
+                let curvature = (du * cubic_bend(&v, p) - dv * cubic_bend(&u, p)) / (du * du + dv * dv).powf(1.5);
+                CurvePoint { u: cubic(&u, p), v: cubic(&v, p), du, dv, curvature }
+            }
+            _ => CurvePoint { u: p, v: 0.0, du: 1.0, dv: 0.0, curvature: 0.0 },
+        }
+    }
+
+    /// A cubic curve's first guess of the parameter at `ds`, and the parameter's whole range.
+    fn parameter_scale(&self, ds: f64) -> (f64, f64) {
+        match self.shape {
+            Shape::ParamPoly3 { normalized, .. } => {
+                let end = if normalized { 1.0 } else { self.length };
+                (if self.length > 0.0 { ds * end / self.length } else { 0.0 }, end)
+            }
+            _ => (ds, self.length),
+        }
+    }
+
+    /// The curve parameter at distance `ds` along a cubic curve: the arc length from 0
+    /// to p equals `ds` (where the record's declared length and the curve's own differ, s
+    /// follows the curve). Newton's method from `guess`; `range` is the parameter's whole
+    /// range.
+    fn parameter_for(&self, ds: f64, guess: f64, range: f64) -> f64 {
         // Up to eight pieces over the whole curve: the speed of a cubic is smooth.
-        let arc = |p: f64| integrate(speed, 0.0, p, (8.0 * (p / range).abs()).ceil().clamp(1.0, 64.0) as usize);
+        let arc = |p: f64| {
+            integrate(|q| self.speed(q), 0.0, p, (8.0 * (p / range).abs()).ceil().clamp(1.0, 64.0) as usize, 16)
+        };
         // Newton's method, kept inside a shrinking bracket.
         let mut p = guess;
         let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
@@ -198,7 +342,7 @@ impl Geometry {
             } else {
                 lo = lo.max(p);
             }
-            let step = f / speed(p).max(1e-12);
+            let step = f / self.speed(p).max(1e-12);
             let mut next = p - step;
             if !(next > lo && next < hi) && lo.is_finite() && hi.is_finite() {
                 next = 0.5 * (lo + hi);
@@ -209,6 +353,35 @@ impl Geometry {
             p = next;
         }
         p
+    }
+
+    /// The curve parameter `delta` along a cubic curve from parameter `from`, by Newton's
+    /// method on the arc length from `from` (one piece: sixteen points, eight within a
+    /// 32nd of the range, four within a 256th), and whether it lies within that 256th;
+    /// `None` beyond an eighth of `range` or without convergence.
+    fn parameter_near(&self, from: f64, delta: f64, range: f64) -> Option<(f64, bool)> {
+        let range = range.abs();
+        let mut p = from + delta / self.speed(from).max(1e-12);
+        for _ in 0..20 {
+            let span = (p - from).abs();
+            if !(span <= range / 8.0) {
+                return None;
+            }
+            let points = if span * 256.0 <= range {
+                4
+            } else if span * 32.0 <= range {
+                8
+            } else {
+                16
+            };
+            let f = integrate(|q| self.speed(q), from, p, 1, points) - delta;
+            let next = p - f / self.speed(p).max(1e-12);
+            if (next - p).abs() <= 1e-14 * (1.0 + p.abs()) {
+                return Some((next, (next - from).abs() * 256.0 <= range));
+            }
+            p = next;
+        }
+        None
     }
 }
 
@@ -272,5 +445,49 @@ mod tests {
         let (dx, dy) = (p.x - 1.0, p.y - 2.0);
         let (local_u, local_v) = (dx * 0.3f64.cos() + dy * 0.3f64.sin(), -dx * 0.3f64.sin() + dy * 0.3f64.cos());
         assert!((local_u - u).abs() < 1e-9 && (local_v - k * u * u).abs() < 1e-9, "{local_u} {local_v}");
+    }
+
+    #[test]
+    fn stations_reached_from_a_station_agree_with_the_record() {
+        let shapes = [
+            (Shape::Line, 100.0),
+            (Shape::Arc { curvature: -0.04 }, 100.0),
+            (Shape::Spiral { start: 0.002, end: 0.05 }, 120.0),
+            (Shape::Poly3 { coefficients: [0.1, 0.02, 0.003, -0.00004] }, 60.0),
+            (Shape::ParamPoly3 { u: [0.0, 40.0, 5.0, -2.0], v: [0.0, 1.0, 6.0, -3.0], normalized: true }, 45.0),
+            (Shape::ParamPoly3 { u: [0.0, 1.0, 0.01, 0.0], v: [0.0, 0.0, 0.004, 0.0001], normalized: false }, 40.0),
+        ];
+        for (shape, length) in shapes {
+            let g = g(shape, length);
+            let from = g.station(20.0);
+            let (mut near, mut far, mut refused) = (0, 0, 0);
+            for delta in [0.0, 1e-7, 0.003, -0.02, 0.05, 0.4, -1.5, 2.5, 4.0, -8.0, 15.0] {
+                let Some((st, close)) = g.station_from(&from, 20.0 + delta) else {
+                    refused += 1;
+                    continue;
+                };
+                if close {
+                    near += 1;
+                } else {
+                    far += 1;
+                }
+                let exact = g.station(20.0 + delta);
+                let (a, b) = (st.pose, exact.pose);
+                let off = (a.x - b.x).hypot(a.y - b.y);
+                assert!(off < 1e-12, "{shape:?} {delta}: {off}");
+                assert!(
+                    (a.hdg - b.hdg).abs() < 1e-13 && (a.curvature - b.curvature).abs() < 1e-13,
+                    "{shape:?} {delta}"
+                );
+                assert!((st.sin - exact.sin).abs() < 1e-14 && (st.cos - exact.cos).abs() < 1e-14, "{shape:?} {delta}");
+                assert!((st.sin.hypot(st.cos) - 1.0).abs() < 1e-15);
+            }
+            // Centimetre steps are served the cheapest way; far stations are refused where
+            // the turn or the curve's stretch is too long.
+            assert!(near >= 4, "{shape:?}: {near} near");
+            if !matches!(shape, Shape::Line) {
+                assert!(far + refused >= 3, "{shape:?}: {far} far, {refused} refused");
+            }
+        }
     }
 }

@@ -6,10 +6,12 @@
 //! index, and its own contact points on the CRG files.
 
 use crate::crg::{self, CrgFiles, CrgPoints};
-use crate::geometry::Pose;
-use crate::locate::{RoadIndex, RoadPos};
+use crate::geometry::Station;
+use crate::lanes::LaneSpan;
+use crate::locate::{Anchor, RoadIndex, RoadPos};
 use crate::map::{CrgPurpose, CrgRecord, Map, Road};
 use crate::surface::span_height;
+use crate::trig;
 use opencrg::Result;
 use std::path::Path;
 use std::sync::Arc;
@@ -72,39 +74,114 @@ impl Surface {
 
     /// A probe for one wheel (or thread).
     pub fn probe(self: &Arc<Self>) -> Probe {
-        Probe { surface: self.clone(), last: None, points: CrgPoints::new(&self.files) }
+        Probe { surface: self.clone(), track: Track::default(), points: CrgPoints::new(&self.files) }
     }
 
     /// Where (x, y) lies on the map, searched through the index: the road whose lane
     /// holds it (a driving lane's before a lane of type `none`, then the first road in
-    /// the file), with the reference line's pose there.
-    fn locate(&self, x: f64, y: f64) -> Option<(RoadPos, Pose)> {
-        let mut best: Option<(bool, RoadPos, Pose)> = None;
+    /// the file), with the anchor its search ended on.
+    fn locate(&self, x: f64, y: f64) -> Option<(Spot<'_>, Station, Option<Anchor>)> {
+        let mut best: Option<(bool, Spot<'_>, Station, Option<Anchor>)> = None;
         for (i, s0, s1) in self.index.candidates(x, y) {
             let road = &self.map.roads[i];
-            let Some((s, t, pose)) = road.project_from(x, y, None, 0.5 * (s0 + s1), s0 - 1.0, s1 + 1.0) else {
+            let mut anchor = None;
+            let Some(p) = road.project_from(x, y, &mut anchor, None, 0.5 * (s0 + s1), (s0 - 1.0, s1 + 1.0)) else {
                 continue;
             };
-            let Some(span) = road.lane_at(s, t) else { continue };
-            let real = span.lane.kind != "none";
-            let better = match best {
+            let Some(lane) = road.lane_place(p.s, p.t) else { continue };
+            let real = lane.0.lane.kind != "none";
+            let better = match &best {
                 None => true,
-                Some((was_real, was, _)) => (real && !was_real) || (real == was_real && i < was.road),
+                Some((was_real, was, ..)) => (real && !was_real) || (real == *was_real && i < was.pos.road),
             };
             if better {
-                best = Some((real, RoadPos { road: i, s, t }, pose));
+                let spot = Spot { pos: RoadPos { road: i, s: p.s, t: p.t }, roll: p.roll, lane: Some(lane) };
+                best = Some((real, spot, p.station, anchor));
             }
         }
-        best.map(|(_, p, pose)| (p, pose))
+        best.map(|(_, spot, station, anchor)| (spot, station, anchor))
     }
+
+    /// Where (x, y) lies on the map: first on the road the wheel of `track` was on, near
+    /// where it was, else through the index; `None` off every road.
+    fn find(&self, x: f64, y: f64, track: &mut Track) -> Option<Spot<'_>> {
+        if let Some((last, station)) = track.last {
+            let road = &self.map.roads[last.road];
+            let (lo, hi) = (last.s - 10.0, last.s + 10.0);
+            if let Some(p) = road.project_from(x, y, &mut track.anchor, Some((last.s, station)), last.s, (lo, hi)) {
+                if let Some(lane) = road.lane_place(p.s, p.t).filter(|(l, _)| l.lane.kind != "none") {
+                    let pos = RoadPos { road: last.road, s: p.s, t: p.t };
+                    track.last = Some((pos, p.station));
+                    return Some(Spot { pos, roll: p.roll, lane: Some(lane) });
+                }
+            }
+        }
+        match self.locate(x, y) {
+            Some((spot, station, anchor)) => {
+                *track = Track { last: Some((spot.pos, station)), anchor };
+                Some(spot)
+            }
+            None => {
+                *track = Track::default();
+                None
+            }
+        }
+    }
+
+    /// The ground at a place of the map, (x, y) its world point.
+    fn ground_at(&self, spot: Spot<'_>, points: &mut CrgPoints, x: f64, y: f64) -> Ground {
+        let Spot { pos, roll: (sr, cr), lane } = spot;
+        let road = &self.map.roads[pos.road];
+        let (s, t) = (pos.s, pos.t);
+        let lane_height = lane.map_or(0.0, |(l, ds)| span_height(&l, ds, t));
+        let height = road.shape_height(s, t) + lane_height;
+        let mut ground = Ground {
+            road: pos.road,
+            lane: lane.map_or(0, |(l, _)| l.lane.id),
+            s,
+            t,
+            z: road.elevation.at(s) + t * sr + height * cr,
+            friction: lane.and_then(|(l, ds)| l.lane.friction_at(ds)).unwrap_or(f64::NAN),
+        };
+        let layers = &self.layers[pos.road];
+        for purpose in [CrgPurpose::Elevation, CrgPurpose::Friction] {
+            let last = layers.iter().rev().find(|(r, _)| r.purpose == purpose && r.s_start <= s && s <= r.s_end);
+            let Some((record, k)) = last else { continue };
+            let value = crg::value(record, *k, &self.files, points, road, (x, y, s, t));
+            match purpose {
+                CrgPurpose::Friction => ground.friction = value,
+                CrgPurpose::Elevation => {
+                    let own = if record.mode == crate::map::CrgMode::Attached { ground.z } else { 0.0 };
+                    ground.z = value * record.z_scale + record.z_offset + own;
+                }
+            }
+        }
+        ground
+    }
+}
+
+/// A world point's place on a road, with what its ground needs: the superelevation's sine
+/// and cosine, the lane and the distance into its section.
+#[derive(Clone, Copy)]
+struct Spot<'a> {
+    pos: RoadPos,
+    roll: (f64, f64),
+    lane: Option<(LaneSpan<'a>, f64)>,
+}
+
+/// Where a wheel was: its place and the reference line's station there, and the anchor
+/// its searches start from.
+#[derive(Default)]
+struct Track {
+    last: Option<(RoadPos, Station)>,
+    anchor: Option<Anchor>,
 }
 
 /// One wheel's view of a [`Surface`]: where it was last, its contact points on the CRG
 /// files. Cheap to make; not shared between threads.
 pub struct Probe {
     surface: Arc<Surface>,
-    /// Where the wheel was, and the reference line's pose there.
-    last: Option<(RoadPos, Pose)>,
+    track: Track,
     points: CrgPoints,
 }
 
@@ -117,81 +194,28 @@ impl Probe {
     /// Where (x, y) lies on the map: first on the road the wheel was on, near where it
     /// was, else through the index; `None` off every road.
     pub fn locate(&mut self, x: f64, y: f64) -> Option<RoadPos> {
-        self.find(x, y).map(|(p, _)| p)
-    }
-
-    /// [`Probe::locate`] with the reference line's pose there.
-    fn find(&mut self, x: f64, y: f64) -> Option<(RoadPos, Pose)> {
-        let surface = &self.surface;
-        if let Some((last, pose)) = self.last {
-            let road = &surface.map.roads[last.road];
-            let near = Some((last.s, pose));
-            if let Some((s, t, pose)) = road.project_from(x, y, near, last.s, last.s - 10.0, last.s + 10.0) {
-                if road.lane_at(s, t).is_some_and(|l| l.lane.kind != "none") {
-                    let here = (RoadPos { road: last.road, s, t }, pose);
-                    self.last = Some(here);
-                    return Some(here);
-                }
-            }
-        }
-        let found = surface.locate(x, y);
-        self.last = found;
-        found
+        self.surface.find(x, y, &mut self.track).map(|spot| spot.pos)
     }
 
     /// The ground at (x, y); `None` off every road.
     pub fn ground(&mut self, x: f64, y: f64) -> Option<Ground> {
-        let (pos, pose) = self.find(x, y)?;
-        Some(self.ground_at(pos, Some(pose), x, y))
-    }
-
-    /// The ground at a known place of the map, (x, y) its world point; `pose` the
-    /// reference line's there, when known.
-    fn ground_at(&mut self, pos: RoadPos, pose: Option<Pose>, x: f64, y: f64) -> Ground {
-        let surface = &self.surface;
-        let road = &surface.map.roads[pos.road];
-        let (s, t) = (pos.s, pos.t);
-        let reference = match pose {
-            Some(p) => road.reference_at(s, p),
-            None => road.reference(s),
-        };
-        let section = road.lanes.section_at(s);
-        let lane = section.and_then(|(sec, ds)| sec.lane_at(ds, t, road.lanes.offset.at(s)).map(|l| (l, ds)));
-        let lane_height = lane.map_or(0.0, |(l, ds)| span_height(&l, ds, t));
-        let height = road.shape_height(s, t) + lane_height;
-        let mut ground = Ground {
-            road: pos.road,
-            lane: lane.map_or(0, |(l, _)| l.lane.id),
-            s,
-            t,
-            z: reference.at(t, height)[2],
-            friction: lane.and_then(|(l, ds)| l.lane.friction_at(ds)).unwrap_or(f64::NAN),
-        };
-        let layers = &surface.layers[pos.road];
-        for purpose in [CrgPurpose::Elevation, CrgPurpose::Friction] {
-            let last = layers.iter().rev().find(|(r, _)| r.purpose == purpose && r.s_start <= s && s <= r.s_end);
-            let Some((record, k)) = last else { continue };
-            let value = crg::value(record, *k, &surface.files, &mut self.points, road, (x, y, s, t));
-            match purpose {
-                CrgPurpose::Friction => ground.friction = value,
-                CrgPurpose::Elevation => {
-                    let own = if record.mode == crate::map::CrgMode::Attached { ground.z } else { 0.0 };
-                    ground.z = value * record.z_scale + record.z_offset + own;
-                }
-            }
-        }
-        ground
+        let surface = &*self.surface;
+        let spot = surface.find(x, y, &mut self.track)?;
+        Some(surface.ground_at(spot, &mut self.points, x, y))
     }
 
     /// The ground at (s, t) of road `road` (index in [`Map::roads`]), with the world point
     /// of the road's surface there: `(x, y, ground)`.
     pub fn ground_st(&mut self, road: usize, s: f64, t: f64) -> Option<(f64, f64, Ground)> {
-        let r: &Road = self.surface.map.roads.get(road)?;
+        let surface = &*self.surface;
+        let r: &Road = surface.map.roads.get(road)?;
         let [x, y, _] = r.surface_point(s, t);
         if !(x.is_finite() && y.is_finite()) {
             return None;
         }
-        Some((x, y, self.ground_at(RoadPos { road, s, t }, None, x, y)))
+        let spot =
+            Spot { pos: RoadPos { road, s, t }, roll: trig::sin_cos(r.superelevation.at(s)), lane: r.lane_place(s, t) };
+        Some((x, y, surface.ground_at(spot, &mut self.points, x, y)))
     }
 
     /// The upward unit normal of the surface at (x, y), CRG records laid on, from the

@@ -57,6 +57,18 @@ impl Lane {
         holding(&self.width, ds, |r| r.s).map_or(0.0, |r| r.value(ds - r.s))
     }
 
+    /// t of its outer border `ds` after its section's start, its inner border at `inner`
+    /// and t growing outwards as `sign`: its border record's, else the inner border and
+    /// its width.
+    fn outer(&self, ds: f64, inner: f64, sign: f64) -> f64 {
+        if self.width.is_empty() {
+            if let Some(b) = holding(&self.border, ds, |r| r.s) {
+                return b.value(ds - b.s);
+            }
+        }
+        inner + sign * self.width_at(ds)
+    }
+
     /// Its heights (inner, outer) `ds` after its section's start.
     pub fn height_at(&self, ds: f64) -> (f64, f64) {
         holding(&self.heights, ds, |h| h.s_offset).map_or((0.0, 0.0), |h| (h.inner, h.outer))
@@ -99,10 +111,7 @@ impl LaneSection {
         let sign = if left { 1.0 } else { -1.0 };
         let mut inner = offset;
         lanes.iter().map(move |lane| {
-            let outer = match holding(&lane.border, ds, |r| r.s) {
-                Some(b) if lane.width.is_empty() => b.value(ds - b.s),
-                _ => inner + sign * lane.width_at(ds),
-            };
+            let outer = lane.outer(ds, inner, sign);
             let span = LaneSpan { lane, inner, outer };
             inner = outer;
             span
@@ -118,15 +127,25 @@ impl LaneSection {
     /// borders enclose t (on a border, the outer lane); `None` beyond the outermost lanes
     /// or on the centre line of a section without lanes there.
     pub fn lane_at(&self, ds: f64, t: f64, offset: f64) -> Option<LaneSpan<'_>> {
-        let left = t >= offset;
-        self.spans(left, ds, offset).into_iter().find(|span| {
-            let (lo, hi) = if left { (span.inner, span.outer) } else { (span.outer, span.inner) };
-            if left {
-                t >= lo && t < hi || (t == hi && t == lo)
-            } else {
-                t > lo && t <= hi || (t == hi && t == lo)
+        let mut inner = offset;
+        if t >= offset {
+            for lane in &self.left {
+                let outer = lane.outer(ds, inner, 1.0);
+                if t < outer || (t == outer && t == inner) {
+                    return Some(LaneSpan { lane, inner, outer });
+                }
+                inner = outer;
             }
-        })
+        } else {
+            for lane in &self.right {
+                let outer = lane.outer(ds, inner, -1.0);
+                if t > outer && t <= inner || (t == outer && t == inner) {
+                    return Some(LaneSpan { lane, inner, outer });
+                }
+                inner = outer;
+            }
+        }
+        None
     }
 }
 

@@ -29,6 +29,7 @@ mod profile;
 mod quadrature;
 mod read;
 mod surface;
+mod trig;
 
 pub use check::{check, Finding};
 pub use geometry::{Geometry, Pose, Shape};

@@ -3,8 +3,9 @@
 //! take; a point is projected onto the reference line of each stretch whose box holds it
 //! (Newton's method on the tangent), and kept where a lane lies at the (s, t) found.
 
-use crate::geometry::Pose;
+use crate::geometry::Station;
 use crate::map::{Map, Road};
+use crate::trig;
 use rstar::{RTree, RTreeObject, AABB};
 
 /// Where a world point lies on the map.
@@ -104,69 +105,114 @@ impl RoadIndex {
     }
 }
 
+/// A search's footing on a road's reference line: a record and a station on it, from
+/// which the stations near it are reached cheaply
+/// ([`Geometry::station_from`](crate::geometry::Geometry)). A station reached that way
+/// from the anchor may become the next anchor, up to [`GENERATIONS`] times before one is
+/// computed from the record again, so that rounding cannot build up.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Anchor {
+    geometry: usize,
+    station: Station,
+    generation: u32,
+}
+
+/// How many anchors in a row may be reached from the one before.
+const GENERATIONS: u32 = 32;
+
+/// A world point projected onto a road: its (s, t), the reference line's station at s and
+/// the superelevation's sine and cosine there.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Projection {
+    pub s: f64,
+    pub t: f64,
+    pub station: Station,
+    pub roll: (f64, f64),
+}
+
 impl Road {
     /// (s, t) of the world point (x, y) near s = `guess`, searched within `lo..=hi`:
     /// the reference line point whose normal passes through it, and how far along the
     /// cross section the surface point over it lies; `None` where the search leaves the
     /// range or the road.
     pub fn project(&self, x: f64, y: f64, guess: f64, lo: f64, hi: f64) -> Option<(f64, f64)> {
-        self.project_from(x, y, None, guess, lo, hi).map(|(s, t, _)| (s, t))
+        self.project_from(x, y, &mut None, None, guess, (lo, hi)).map(|p| (p.s, p.t))
     }
 
-    /// [`Road::project`] starting from a known pose of the reference line (`near`: its s
-    /// and pose), each pose of the search reached from the one before it (a short
-    /// quadrature on a spiral); also gives the reference line's pose at the s found.
+    /// The reference line's station at `s`: reached from `anchor` where that lies on the
+    /// same record near enough, else computed from the record, which then becomes the
+    /// anchor.
+    pub(crate) fn station_at(&self, s: f64, anchor: &mut Option<Anchor>) -> Option<Station> {
+        if let Some(a) = anchor {
+            let g = &self.plan[a.geometry];
+            let holds = (a.geometry == 0 || g.s <= s) && self.plan.get(a.geometry + 1).is_none_or(|n| n.s > s);
+            if holds {
+                match g.station_from(&a.station, s - g.s) {
+                    Some((station, true)) => return Some(station),
+                    Some((station, false)) if a.generation < GENERATIONS => {
+                        *anchor = Some(Anchor { geometry: a.geometry, station, generation: a.generation + 1 });
+                        return Some(station);
+                    }
+                    _ => {}
+                }
+            }
+        }
+        if self.plan.is_empty() {
+            return None;
+        }
+        let geometry = self.plan.partition_point(|g| g.s <= s).saturating_sub(1);
+        let g = &self.plan[geometry];
+        let station = g.station(s - g.s);
+        *anchor = Some(Anchor { geometry, station, generation: 0 });
+        Some(station)
+    }
+
+    /// [`Road::project`] with the stations of the search reached from `anchor` (which it
+    /// moves where it must), starting from `start` (s and its station) when given.
     pub(crate) fn project_from(
         &self,
         x: f64,
         y: f64,
-        near: Option<(f64, Pose)>,
+        anchor: &mut Option<Anchor>,
+        start: Option<(f64, Station)>,
         guess: f64,
-        lo: f64,
-        hi: f64,
-    ) -> Option<(f64, f64, Pose)> {
+        (lo, hi): (f64, f64),
+    ) -> Option<Projection> {
         let (lo, hi) = (lo.max(0.0), hi.min(self.length));
-        let pose_at = |s: f64, known: Option<(f64, Pose)>| -> Option<Pose> {
-            let g = self.geometry_at(s)?;
-            match known {
-                Some((ks, kp)) if self.geometry_at(ks).is_some_and(|kg| std::ptr::eq(kg, g)) => {
-                    Some(g.pose_from(ks - g.s, kp, s - g.s))
-                }
-                _ => Some(g.pose(s - g.s)),
-            }
-        };
         let mut s = guess.clamp(lo, hi);
-        let mut p = match near {
-            Some((ns, np)) if ns == s => np,
-            _ => pose_at(s, near)?,
+        let mut p = match start {
+            Some((ss, station)) if ss == s => station,
+            _ => self.station_at(s, anchor)?,
         };
-        for _ in 0..30 {
-            let (sin, cos) = p.hdg.sin_cos();
-            let (ex, ey) = (x - p.x, y - p.y);
-            let along = ex * cos + ey * sin;
-            let across = -ex * sin + ey * cos;
+        let (mut along, mut across);
+        let mut rounds = 0;
+        loop {
+            let (ex, ey) = (x - p.pose.x, y - p.pose.y);
+            along = ex * p.cos + ey * p.sin;
+            across = -ex * p.sin + ey * p.cos;
+            rounds += 1;
+            if rounds > 30 {
+                break;
+            }
             // The normal turns with the curvature as s moves.
-            let denominator = (1.0 - p.curvature * across).max(0.1);
+            let denominator = (1.0 - p.pose.curvature * across).max(0.1);
             let step = (along / denominator).clamp(-STRETCH, STRETCH);
             let next = (s + step).clamp(lo, hi);
             if (next - s).abs() < 1e-10 {
                 break;
             }
-            p = pose_at(next, Some((s, p)))?;
+            p = self.station_at(next, anchor)?;
             s = next;
         }
-        let (sin, cos) = p.hdg.sin_cos();
-        let (ex, ey) = (x - p.x, y - p.y);
-        if (ex * cos + ey * sin).abs() > 1e-6 {
+        if along.abs() > 1e-6 {
             return None;
         }
-        let ground = -ex * sin + ey * cos;
+        let ground = across;
         // The surface point at t lies t cos r - h(s, t) sin r from the line on the ground.
         let roll = self.superelevation.at(s);
-        let (sr, cr) = roll.sin_cos();
+        let (sr, cr) = trig::sin_cos(roll);
         let mut t = ground / cr;
-        let level = self.shape.is_empty() && !self.lanes.section_at(s).is_some_and(|(l, _)| l.has_heights());
-        if roll != 0.0 && !level {
+        if roll != 0.0 && !self.level_at(s) {
             for _ in 0..4 {
                 let h = self.height_above_section(s, t);
                 if h == 0.0 {
@@ -175,6 +221,11 @@ impl Road {
                 t = (ground + h * sr) / cr;
             }
         }
-        Some((s, t, p))
+        Some(Projection { s, t, station: p, roll: (sr, cr) })
+    }
+
+    /// Whether the surface lies on the cross section at s (no lateral shape, no lane heights).
+    fn level_at(&self, s: f64) -> bool {
+        self.shape.is_empty() && !self.lanes.section_at(s).is_some_and(|(l, _)| l.has_heights())
     }
 }

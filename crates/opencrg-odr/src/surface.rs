@@ -60,13 +60,8 @@ impl Road {
 
     /// The reference line at `s`.
     pub fn reference(&self, s: f64) -> RefPoint {
-        let pose = self.geometry_at(s).map(|g| g.pose(s - g.s));
-        self.reference_at(s, pose.unwrap_or(Pose { x: f64::NAN, y: f64::NAN, hdg: f64::NAN, curvature: f64::NAN }))
-    }
-
-    /// The reference line at `s`, whose pose in the plane is known.
-    pub(crate) fn reference_at(&self, s: f64, pose: Pose) -> RefPoint {
-        let Pose { x, y, hdg, .. } = pose;
+        let nan = Pose { x: f64::NAN, y: f64::NAN, hdg: f64::NAN, curvature: f64::NAN };
+        let Pose { x, y, hdg, .. } = self.geometry_at(s).map_or(nan, |g| g.pose(s - g.s));
         RefPoint {
             x,
             y,
@@ -79,8 +74,13 @@ impl Road {
 
     /// The lane at (s, t) with its borders.
     pub fn lane_at(&self, s: f64, t: f64) -> Option<LaneSpan<'_>> {
+        self.lane_place(s, t).map(|(span, _)| span)
+    }
+
+    /// The lane at (s, t) with its borders, and s less its section's start.
+    pub(crate) fn lane_place(&self, s: f64, t: f64) -> Option<(LaneSpan<'_>, f64)> {
         let (section, ds) = self.lanes.section_at(s)?;
-        section.lane_at(ds, t, self.lanes.offset.at(s))
+        section.lane_at(ds, t, self.lanes.offset.at(s)).map(|span| (span, ds))
     }
 
     /// The lateral shape's height at (s, t): each group's polynomials along t, linear
