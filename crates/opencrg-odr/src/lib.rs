@@ -30,6 +30,7 @@ mod quadrature;
 mod read;
 mod surface;
 mod trig;
+mod xml;
 
 pub use check::{check, Finding};
 pub use geometry::{Geometry, Pose, Shape};

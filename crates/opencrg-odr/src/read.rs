@@ -7,8 +7,8 @@ use crate::geometry::{Geometry, Shape};
 use crate::lanes::{Height, Lane, LaneSection, Lanes, Material};
 use crate::map::{CrgMode, CrgOrientation, CrgPurpose, CrgRecord, Header, Junction, Map, Road, ShapeGroup};
 use crate::profile::{Cubic, Profile};
+use crate::xml::{Node, Tree};
 use opencrg::{Error, Location, Result};
-use roxmltree::Node;
 use std::path::{Path, PathBuf};
 
 /// Where the reader is: the file, and where its lines start (for line numbers).
@@ -21,14 +21,14 @@ struct Reader<'a> {
 impl Reader<'_> {
     /// The 1-based line of the element's start.
     fn line(&self, node: Node) -> usize {
-        self.line_starts.partition_point(|&start| start <= node.range().start)
+        self.line_starts.partition_point(|&start| start <= node.start())
     }
 
     fn refuse(&self, node: Node, field: &str, message: impl Into<String>) -> Error {
         Error::Format {
             path: self.path.to_path_buf(),
             location: Location::Line(self.line(node)),
-            field: format!("<{}> {field}", node.tag_name().name()),
+            field: format!("<{}> {field}", node.name()),
             message: message.into(),
         }
     }
@@ -65,10 +65,10 @@ impl Reader<'_> {
     fn geometry(&self, node: Node) -> Result<Geometry> {
         let shape_node = node
             .children()
-            .find(|c| c.is_element())
+            .next()
             .ok_or_else(|| self.refuse(node, "shape", "no line, arc, spiral, poly3 or paramPoly3 inside"))?;
         let n = |name: &str| self.number(shape_node, name, Some(0.0));
-        let shape = match shape_node.tag_name().name() {
+        let shape = match shape_node.name() {
             "line" => Shape::Line,
             "arc" => Shape::Arc { curvature: self.number(shape_node, "curvature", None)? },
             "spiral" => Shape::Spiral {
@@ -108,8 +108,8 @@ impl Reader<'_> {
         let mut border = Vec::new();
         let mut heights = Vec::new();
         let mut materials = Vec::new();
-        for c in node.children().filter(Node::is_element) {
-            match c.tag_name().name() {
+        for c in node.children() {
+            match c.name() {
                 "width" => width.push(self.cubic(c, "sOffset")?),
                 "border" => border.push(self.cubic(c, "sOffset")?),
                 "height" => heights.push(Height {
@@ -195,7 +195,7 @@ impl Reader<'_> {
             h_offset: self.number(node, "hOffset", Some(0.0))?,
             x_offset: self.number(node, "xOffset", Some(0.0))?,
             y_offset: self.number(node, "yOffset", Some(0.0))?,
-            given: node.attributes().map(|a| a.name().to_string()).collect(),
+            given: node.attributes().map(|(name, _)| name.to_string()).collect(),
             line: self.line(node),
         })
     }
@@ -258,16 +258,13 @@ impl Reader<'_> {
 }
 
 /// The first child element called `tag`.
-fn child<'a, 'input>(node: Node<'a, 'input>, tag: &str) -> Option<Node<'a, 'input>> {
-    node.children().find(|c| c.is_element() && c.tag_name().name() == tag)
+fn child<'t, 'a>(node: Node<'t, 'a>, tag: &str) -> Option<Node<'t, 'a>> {
+    node.children().find(|c| c.name() == tag)
 }
 
 /// The child elements called `tag` (none when there is no parent).
-fn children<'a, 'input: 'a>(
-    parent: Option<Node<'a, 'input>>,
-    tag: &'a str,
-) -> impl Iterator<Item = Node<'a, 'input>> + 'a {
-    parent.into_iter().flat_map(move |p| p.children().filter(move |c| c.is_element() && c.tag_name().name() == tag))
+fn children<'t, 'a: 't>(parent: Option<Node<'t, 'a>>, tag: &'t str) -> impl Iterator<Item = Node<'t, 'a>> + 't {
+    parent.into_iter().flat_map(move |p| p.children().filter(move |c| c.name() == tag))
 }
 
 impl Map {
@@ -288,19 +285,19 @@ impl Map {
             message,
         };
         let text = std::str::from_utf8(bytes).map_err(|e| refuse(0, "text", format!("not UTF-8 ({e})")))?;
-        let options = roxmltree::ParsingOptions { allow_dtd: true, ..Default::default() };
-        let doc = roxmltree::Document::parse_with_options(text, options)
-            .map_err(|e| refuse(e.pos().row as usize, "XML", e.to_string()))?;
-        let root = doc.root_element();
-        if root.tag_name().name() != "OpenDRIVE" {
-            return Err(refuse(1, "root", format!("<{}> is not <OpenDRIVE>", root.tag_name().name())));
+        let line_starts: Vec<usize> =
+            std::iter::once(0).chain(memchr::memchr_iter(b'\n', bytes).map(|i| i + 1)).collect();
+        let line = |offset: usize| line_starts.partition_point(|&start| start <= offset);
+        let tree = Tree::parse(text).map_err(|e| refuse(line(e.offset), "XML", e.message))?;
+        let root = tree.root();
+        if root.name() != "OpenDRIVE" {
+            return Err(refuse(line(root.start()), "root", format!("<{}> is not <OpenDRIVE>", root.name())));
         }
-        let line_starts = std::iter::once(0).chain(text.match_indices('\n').map(|(i, _)| i + 1)).collect();
         let reader = Reader { path, folder: path.parent().map(Path::to_path_buf).unwrap_or_default(), line_starts };
         let mut header = Header::default();
         let (mut roads, mut junctions) = (Vec::new(), Vec::new());
-        for node in root.children().filter(Node::is_element) {
-            match node.tag_name().name() {
+        for node in root.children() {
+            match node.name() {
                 "header" => {
                     header = Header {
                         rev_major: reader.number(node, "revMajor", Some(1.0))? as u32,

@@ -45,7 +45,7 @@ fn broken_maps_are_refused_with_file_line_and_element() {
     let e = refusal("<OpenDRIVE><road id=\"1\" length=\"10\"></OpenDRIVE>");
     assert!(e.starts_with("bad.xodr:1") && e.contains("XML"), "{e}");
     let e = refusal("<?xml version=\"1.0\"?>\n<osm/>");
-    assert!(e.contains("bad.xodr:1") && e.contains("<osm>"), "{e}");
+    assert!(e.contains("bad.xodr:2") && e.contains("<osm>"), "{e}");
     let e = refusal(&format!("{ROAD_START}<road id=\"7\">\n</road>\n</OpenDRIVE>"));
     assert!(e.contains("bad.xodr:4") && e.contains("<road> length") && e.contains("missing"), "{e}");
     let e = refusal(&format!(
