@@ -10,10 +10,14 @@
  * defines them, so the library's calls land here). Then it evaluates: every classic call,
  * the normals and the batches, along a wheel's path and at random points on and off the
  * road, a short run and a long one, then the same on two threads at once, each with
- * contact points of its own. It reports through memory shared with the parent and ends
- * with exit(2). The parent checks that it ended normally with no allocation counted.
+ * contact points of its own. With SCRATCH_DIR, the same holds for OpenDRIVE maps
+ * (crgOdr.h): a map written there lays ROAD on a curved road, and each car's wheels also
+ * ask their probes for the ground, the normal and road coordinates, on the road and off
+ * it. It reports through memory shared with the parent and ends with exit(2). The parent
+ * checks that it ended normally with no allocation counted.
  *
- * usage: test_realtime ROAD [CALLS]   (CALLS per kind in the long run, default 200000)
+ * usage: test_realtime ROAD [CALLS [SCRATCH_DIR]]   (CALLS per kind in the long run,
+ * default 200000)
  */
 #define _GNU_SOURCE
 #include <linux/audit.h>
@@ -32,7 +36,9 @@
 #include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <limits.h>
 #include "crgBaseLib.h"
+#include "crgOdr.h"
 
 #if defined(__x86_64__)
 #define THIS_ARCH AUDIT_ARCH_X86_64
@@ -80,6 +86,7 @@ int posix_memalign(void **out, size_t align, size_t n)
 /* What the child reports. */
 struct Report {
     long calls;      /* evaluation calls made under the filter */
+    long map_hits;   /* OpenDRIVE queries that found the road */
     long allocations;
     double sink;     /* the answers, summed, so nothing is left out */
     int filtered;    /* the filter was installed */
@@ -131,6 +138,9 @@ static int forbid_system_calls(void)
 
 static int g_data;
 static double g_umin, g_umax, g_vmin, g_vmax;
+/* The OpenDRIVE map (0 without one) and the length of its road. */
+static int g_map;
+static double g_map_length;
 
 /* A small generator, the same on every run. */
 static unsigned long long next(unsigned long long *state)
@@ -143,12 +153,15 @@ static unsigned long long next(unsigned long long *state)
 
 static double unit(unsigned long long *state) { return (next(state) >> 11) * (1.0 / 9007199254740992.0); }
 
-/* A car's contact points: one per wheel and one shared by all. */
+/* A car's contact points: one per wheel and one shared by all; a probe per wheel on the
+ * map, when there is one. */
 struct Car {
     int cp[WHEELS];
     int shared;
+    int probe[WHEELS];
     double start;
     long calls;
+    long map_hits;
     long per_kind;
     double sink;
     unsigned long long seed;
@@ -161,6 +174,8 @@ static void make_car(struct Car *car, double start, long per_kind, unsigned long
     for (int w = 0; w < WHEELS; w++)
         car->cp[w] = crgContactPointCreate(g_data);
     car->shared = crgContactPointCreate(g_data);
+    for (int w = 0; w < WHEELS; w++)
+        car->probe[w] = g_map ? crgOdrProbeCreate(g_map) : -1;
     car->start = start;
     car->per_kind = per_kind;
     car->seed = seed;
@@ -187,10 +202,39 @@ static void evaluate(struct Car *car, int cp, double u, double v)
     car->calls += 9;
 }
 
+/* Every OpenDRIVE query of a wheel at (s, t) of the map's road, on its probe. */
+static void probe_ground(struct Car *car, int probe, double s, double t)
+{
+    double x = 0, y = 0, z = 0, mu = 0, ss = 0, tt = 0, n[3] = { 0, 0, 0 };
+    int road = 0, lane = 0;
+    crgOdrEvalst2xyz(probe, 0, s, t, &x, &y, &z);
+    car->map_hits += crgOdrEvalxy(probe, x, y, &z, &mu, &road, &lane, &ss, &tt);
+    car->sink += z + ss + tt;
+    crgOdrEvalxy2normal(probe, x, y, &n[0], &n[1], &n[2]);
+    car->sink += n[2];
+    car->calls += 3;
+}
+
 /* Drives the car along the road (every wheel, then the shared contact point), then
- * random points on and around the road, then the batches. */
+ * random points on and around the road, then the batches; on the map, its wheels along
+ * the road and at random points on and off it. */
 static void drive(struct Car *car)
 {
+    if (g_map) {
+        for (long k = 0; k < car->per_kind; k++) {
+            double s = fmod(car->start + 0.02 * (double)k, g_map_length - 4.0);
+            for (int w = 0; w < WHEELS; w++)
+                probe_ground(car, car->probe[w], s + (w < 2 ? 2.6 : 0.0), w % 2 ? -0.8 : 0.8);
+        }
+        for (long k = 0; k < car->per_kind / 4; k++) {
+            double x = -20.0 + (g_map_length + 40.0) * unit(&car->seed);
+            double y = -30.0 + 60.0 * unit(&car->seed);
+            double z, mu, s, t;
+            int road, lane;
+            crgOdrEvalxy(car->probe[k % WHEELS], x, y, &z, &mu, &road, &lane, &s, &t);
+            car->calls += 1;
+        }
+    }
     double length = g_umax - g_umin, width = g_vmax - g_vmin;
     for (long k = 0; k < car->per_kind; k++) {
         double u = g_umin + fmod(car->start + 0.03 * (double)k, length);
@@ -236,6 +280,53 @@ static void *car_thread(void *arg)
     return NULL;
 }
 
+/* Writes a map into `folder` that lays `road` (attached) on a road of a line, a spiral
+ * and an arc, superelevated, with lanes of a material, and loads it. */
+static int load_map(const char *road, const char *folder)
+{
+    char path[4096], whole[PATH_MAX];
+    if (!realpath(road, whole))
+        return 0;
+    snprintf(path, sizeof path, "%s/realtime_map.xodr", folder);
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return 0;
+    /* The arc starts where the spiral (curvature 0 to 0.01 over 50 m) ends. */
+    double length = 200.0;
+    double sx = 0.0, sy = 0.0;
+    for (int i = 0; i < 100000; i++) {
+        double s = 50.0 * (i + 0.5) / 100000.0, a = 0.01 * s * s / 100.0;
+        sx += cos(a) * 50.0 / 100000.0;
+        sy += sin(a) * 50.0 / 100000.0;
+    }
+    fprintf(f,
+            "<?xml version=\"1.0\"?>\n<OpenDRIVE><header revMajor=\"1\" revMinor=\"8\"/>\n"
+            "<road id=\"r\" length=\"%.17g\" junction=\"-1\"><planView>\n"
+            "<geometry s=\"0\" x=\"0\" y=\"0\" hdg=\"0\" length=\"50\"><line/></geometry>\n"
+            "<geometry s=\"50\" x=\"50\" y=\"0\" hdg=\"0\" length=\"50\"><spiral curvStart=\"0\" curvEnd=\"0.01\"/></geometry>\n"
+            "<geometry s=\"100\" x=\"%.17g\" y=\"%.17g\" hdg=\"0.25\" length=\"100\"><arc curvature=\"0.01\"/></geometry>\n"
+            "</planView>\n"
+            "<elevationProfile><elevation s=\"0\" a=\"3\" b=\"0.01\" c=\"0\" d=\"0\"/></elevationProfile>\n"
+            "<lateralProfile><superelevation s=\"0\" a=\"0.02\" b=\"0\" c=\"0\" d=\"0\"/></lateralProfile>\n"
+            "<lanes><laneSection s=\"0\">\n"
+            "<left><lane id=\"1\" type=\"driving\"><width sOffset=\"0\" a=\"3.5\" b=\"0\" c=\"0\" d=\"0\"/>"
+            "<material sOffset=\"0\" friction=\"0.8\"/></lane></left>\n"
+            "<center><lane id=\"0\" type=\"none\"/></center>\n"
+            "<right><lane id=\"-1\" type=\"driving\"><width sOffset=\"0\" a=\"3.5\" b=\"0\" c=\"0\" d=\"0\"/>"
+            "</lane></right>\n</laneSection></lanes>\n"
+            "<surface><CRG file=\"%s\" sStart=\"0\" sEnd=\"%.17g\" mode=\"attached\" orientation=\"same\"/></surface>\n"
+            "</road></OpenDRIVE>\n",
+            length, 50.0 + sx, sy, whole, length);
+    fclose(f);
+    g_map = crgOdrMapLoad(path);
+    g_map_length = length;
+    if (g_map <= 0) {
+        fprintf(stderr, "cannot load the map %s\n", path);
+        return 0;
+    }
+    return 1;
+}
+
 /* The child: contact points first, then the filter and the count, then the evaluation. */
 static void child(struct Report *report, long calls)
 {
@@ -266,6 +357,7 @@ static void child(struct Report *report, long calls)
     atomic_store(&g_counting, 0);
     report->allocations = atomic_load(&g_allocations);
     report->calls = short_run.calls + long_run.calls + threaded[0].calls + threaded[1].calls;
+    report->map_hits = short_run.map_hits + long_run.map_hits + threaded[0].map_hits + threaded[1].map_hits;
     report->sink = short_run.sink + long_run.sink + threaded[0].sink + threaded[1].sink;
     report->finished = 1;
     syscall(SYS_exit_group, 0);
@@ -274,7 +366,7 @@ static void child(struct Report *report, long calls)
 int main(int argc, char **argv)
 {
     if (argc < 2) {
-        fprintf(stderr, "usage: test_realtime ROAD [CALLS]\n");
+        fprintf(stderr, "usage: test_realtime ROAD [CALLS [SCRATCH_DIR]]\n");
         return 2;
     }
     long calls = argc > 2 ? atol(argv[2]) : 200000;
@@ -295,6 +387,8 @@ int main(int argc, char **argv)
     crgContactPointDelete(probe);
     crgDataSetGetURange(g_data, &g_umin, &g_umax);
     crgDataSetGetVRange(g_data, &g_vmin, &g_vmax);
+    if (argc > 3 && !load_map(argv[1], argv[3]))
+        return 1;
     struct Report *report = mmap(NULL, sizeof *report, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
     if (report == MAP_FAILED)
         return 1;
@@ -326,8 +420,13 @@ int main(int argc, char **argv)
         printf("FAIL: the evaluation ended with status %d before finishing\n", status);
         return 1;
     }
-    printf("%ld evaluation calls on 2 threads and alone: %ld allocations, no system call (sum %g)\n",
-           report->calls, report->allocations, report->sink);
+    printf("%ld evaluation calls on 2 threads and alone (%ld OpenDRIVE grounds found): %ld allocations, no system "
+           "call (sum %g)\n",
+           report->calls, report->map_hits, report->allocations, report->sink);
+    if (g_map && report->map_hits < 100000) {
+        printf("FAIL: the wheels found the map's road %ld times\n", report->map_hits);
+        return 1;
+    }
     if (report->allocations != 0) {
         printf("FAIL: evaluation allocated memory\n");
         return 1;

@@ -22,6 +22,7 @@ mod profile;
 mod ptr;
 mod registry;
 mod report;
+mod slots;
 mod thread_id;
 
 pub use api::*;

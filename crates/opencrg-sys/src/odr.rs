@@ -2,34 +2,29 @@
 //! indexed, its CRG files read), a probe per wheel or thread, the ground at world x/y and
 //! the world point of road coordinates. Ids as in the classic API: maps > 0, probes >= 0;
 //! calls return 1 on success and 0 otherwise (an unknown id, a null output, a point off
-//! every road). A probe is used by one thread at a time (each call locks it); queries
-//! allocate nothing.
+//! every road). Probes live in a table of slots like the contact points ([`Slots`]): a
+//! thread evaluating its own probe takes no lock, others take the probe's own; queries
+//! allocate nothing and make no system call.
 #![allow(non_snake_case)] // the C API's parameter names
 
 use crate::lock::lock;
 use crate::panic::guard;
 use crate::ptr::{in_str, out};
+use crate::slots::Slots;
 use crate::{c_path, msg};
 use opencrg_odr::{Probe, Surface};
 use std::ffi::{c_char, c_int};
 use std::sync::{Arc, Mutex};
 
-/// The loaded maps (index + 1 is the id) and the probes (index is the id, with their map's id).
-struct Tables {
-    maps: Vec<Option<Arc<Surface>>>,
-    probes: Vec<Option<(c_int, Arc<Mutex<Probe>>)>>,
-}
+/// The loaded maps (index + 1 is the id).
+static MAPS: Mutex<Vec<Option<Arc<Surface>>>> = Mutex::new(Vec::new());
 
-static TABLES: Mutex<Tables> = Mutex::new(Tables { maps: Vec::new(), probes: Vec::new() });
+/// The probes, by id, with the map each was made on.
+static PROBES: Slots<Probe> = Slots::new();
 
 fn map(id: c_int) -> Option<Arc<Surface>> {
     let index = usize::try_from(id).ok()?.checked_sub(1)?;
-    lock(&TABLES).maps.get(index)?.clone()
-}
-
-fn probe(id: c_int) -> Option<Arc<Mutex<Probe>>> {
-    let index = usize::try_from(id).ok()?;
-    lock(&TABLES).probes.get(index)?.as_ref().map(|(_, p)| p.clone())
+    lock(&MAPS).get(index)?.clone()
 }
 
 /// ======================================================================================
@@ -53,9 +48,9 @@ pub unsafe extern "C" fn crgOdrMapLoad(filename: *const c_char) -> c_int {
         };
         match Surface::load(c_path::path_of(filename)) {
             Ok(surface) => {
-                let mut t = lock(&TABLES);
-                t.maps.push(Some(Arc::new(surface)));
-                c_int::try_from(t.maps.len()).unwrap_or(0)
+                let mut maps = lock(&MAPS);
+                maps.push(Some(Arc::new(surface)));
+                c_int::try_from(maps.len()).unwrap_or(0)
             }
             Err(e) => {
                 msg::fatal(&format!("crgOdrMapLoad: {e}"));
@@ -69,20 +64,15 @@ pub unsafe extern "C" fn crgOdrMapLoad(filename: *const c_char) -> c_int {
 #[no_mangle]
 pub extern "C" fn crgOdrMapRelease(mapId: c_int) -> c_int {
     guard("crgOdrMapRelease", 0, || {
-        let mut t = lock(&TABLES);
-        let Some(slot) = usize::try_from(mapId).ok().and_then(|i| i.checked_sub(1)).and_then(|i| t.maps.get_mut(i))
-        else {
-            return 0;
+        let released = {
+            let mut maps = lock(&MAPS);
+            let index = usize::try_from(mapId).ok().and_then(|i| i.checked_sub(1));
+            index.and_then(|i| maps.get_mut(i)).and_then(Option::take).is_some()
         };
-        if slot.take().is_none() {
-            return 0;
+        if released {
+            PROBES.delete_of(Some(mapId));
         }
-        for p in t.probes.iter_mut() {
-            if p.as_ref().is_some_and(|(m, _)| *m == mapId) {
-                *p = None;
-            }
-        }
-        1
+        c_int::from(released)
     })
 }
 
@@ -101,30 +91,14 @@ pub extern "C" fn crgOdrMapGetRoadCount(mapId: c_int) -> c_int {
 pub extern "C" fn crgOdrProbeCreate(mapId: c_int) -> c_int {
     guard("crgOdrProbeCreate", -1, || {
         let Some(surface) = map(mapId) else { return -1 };
-        let probe = Arc::new(Mutex::new(surface.probe()));
-        let mut t = lock(&TABLES);
-        let slot = t.probes.iter().position(Option::is_none).unwrap_or(t.probes.len());
-        if slot == t.probes.len() {
-            t.probes.push(None);
-        }
-        t.probes[slot] = Some((mapId, probe));
-        c_int::try_from(slot).unwrap_or(-1)
+        PROBES.create(mapId, surface.probe())
     })
 }
 
 /// Releases a probe; 1, or 0 for an unknown id.
 #[no_mangle]
 pub extern "C" fn crgOdrProbeRelease(probeId: c_int) -> c_int {
-    guard("crgOdrProbeRelease", 0, || {
-        let mut t = lock(&TABLES);
-        match usize::try_from(probeId).ok().and_then(|i| t.probes.get_mut(i)) {
-            Some(slot @ Some(_)) => {
-                *slot = None;
-                1
-            }
-            _ => 0,
-        }
-    })
+    guard("crgOdrProbeRelease", 0, || c_int::from(PROBES.delete(probeId)))
 }
 
 /// The ground at the world point (x, y): the surface's height with the CRG records laid
@@ -151,8 +125,7 @@ pub unsafe extern "C" fn crgOdrEvalxy(
     let outs = unsafe { (out(z), out(friction), out(road), out(lane), out(s), out(t)) };
     guard("crgOdrEvalxy", 0, || {
         let (Some(z), Some(friction), Some(road), Some(lane), Some(s), Some(t)) = outs else { return 0 };
-        let Some(p) = probe(probeId) else { return 0 };
-        let Some(g) = lock(&p).ground(x, y) else { return 0 };
+        let Some(Some(g)) = PROBES.with_mut(probeId, |p| p.ground(x, y)) else { return 0 };
         (*z, *friction, *s, *t) = (g.z, g.friction, g.s, g.t);
         (*road, *lane) = (c_int::try_from(g.road).unwrap_or(-1), g.lane);
         1
@@ -178,8 +151,7 @@ pub unsafe extern "C" fn crgOdrEvalxy2normal(
     let outs = unsafe { (out(nx), out(ny), out(nz)) };
     guard("crgOdrEvalxy2normal", 0, || {
         let (Some(nx), Some(ny), Some(nz)) = outs else { return 0 };
-        let Some(p) = probe(probeId) else { return 0 };
-        let Some([a, b, c]) = lock(&p).normal(x, y) else { return 0 };
+        let Some(Some([a, b, c])) = PROBES.with_mut(probeId, |p| p.normal(x, y)) else { return 0 };
         (*nx, *ny, *nz) = (a, b, c);
         1
     })
@@ -205,8 +177,8 @@ pub unsafe extern "C" fn crgOdrEvalst2xyz(
     let outs = unsafe { (out(x), out(y), out(z)) };
     guard("crgOdrEvalst2xyz", 0, || {
         let (Some(x), Some(y), Some(z)) = outs else { return 0 };
-        let (Some(p), Ok(road)) = (probe(probeId), usize::try_from(road)) else { return 0 };
-        let Some((px, py, g)) = lock(&p).ground_st(road, s, t) else { return 0 };
+        let Ok(road) = usize::try_from(road) else { return 0 };
+        let Some(Some((px, py, g))) = PROBES.with_mut(probeId, |p| p.ground_st(road, s, t)) else { return 0 };
         (*x, *y, *z) = (px, py, g.z);
         1
     })

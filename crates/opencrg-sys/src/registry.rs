@@ -1,17 +1,13 @@
 //! The id tables the classic API demands: data sets and contact points.
 //!
-//! Data sets live in one table behind a lock. Contact points live in slots of
-//! fixed address, each in an [`OwnedCell`] (its own lock, and the owner's lock-free
-//! path), so evaluation on different contact points from different threads never waits
-//! on a shared lock.
+//! Data sets live in one table behind a lock. Contact points live in a table of slots
+//! ([`Slots`]: each its own lock and its owner's lock-free path), so evaluation on
+//! different contact points from different threads never waits on a shared lock.
 
 use crate::lock::lock;
-use crate::owner::OwnedCell;
-use crate::thread_id::thread_id;
+use crate::slots::Slots;
 use opencrg::{ContactPoint, Road};
-use std::collections::BTreeSet;
 use std::ffi::c_int;
-use std::sync::atomic::{AtomicI32, AtomicPtr, Ordering};
 use std::sync::{Arc, Mutex};
 
 /// A loaded data set.
@@ -22,60 +18,8 @@ pub struct DataSet {
 
 static DATASETS: Mutex<Vec<DataSet>> = Mutex::new(Vec::new());
 
-const CHUNK: usize = 256;
-const MAX_CHUNKS: usize = 4096;
-/// The slots, CHUNK at a time: null until the first contact point of a chunk is made
-/// (under the [`CP_TABLE`] lock), never freed after.
-static CHUNKS: [AtomicPtr<[Slot; CHUNK]>; MAX_CHUNKS] = [const { AtomicPtr::new(std::ptr::null_mut()) }; MAX_CHUNKS];
-
-/// One contact point's place, on its own cache lines so that threads working on
-/// neighbouring contact points do not slow each other.
-#[repr(align(128))]
-struct Slot {
-    /// The data set of the contact point held, 0 when the slot is free (changed
-    /// only under both the table's and the slot's lock).
-    dataset: AtomicI32,
-    cp: OwnedCell<Option<ContactPoint>>,
-}
-
-impl Slot {
-    fn new() -> Self {
-        Slot { dataset: AtomicI32::new(0), cp: OwnedCell::new(None) }
-    }
-}
-
-/// The contact point ids handed out so far: the table's size, and the free ids below it.
-struct CpTable {
-    size: usize,
-    free: BTreeSet<usize>,
-}
-
-/// Held while contact points are created or deleted.
-static CP_TABLE: Mutex<CpTable> = Mutex::new(CpTable { size: 0, free: BTreeSet::new() });
-
-fn slot(id: usize) -> Option<&'static Slot> {
-    let chunk = CHUNKS.get(id / CHUNK)?.load(Ordering::Acquire);
-    // SAFETY: a chunk pointer is null or points to a chunk that lives as long as the process.
-    unsafe { chunk.as_ref() }.map(|c| &c[id % CHUNK])
-}
-
-/// The slot of a contact point id as the C API passes it: a negative id becomes an
-/// index past every chunk (one comparison in the hot path instead of two).
-#[inline(always)]
-fn slot_of(id: c_int) -> Option<&'static Slot> {
-    slot(id as u32 as usize)
-}
-
-/// The slot of `id`, its chunk made when missing. Called with the [`CP_TABLE`] lock held.
-fn slot_or_create(id: usize) -> Option<&'static Slot> {
-    let entry = CHUNKS.get(id / CHUNK)?;
-    if entry.load(Ordering::Acquire).is_null() {
-        let slots: Box<[Slot]> = (0..CHUNK).map(|_| Slot::new()).collect();
-        let chunk: Box<[Slot; CHUNK]> = slots.try_into().unwrap_or_else(|_| unreachable!("the chunk has CHUNK slots"));
-        entry.store(Box::into_raw(chunk), Ordering::Release);
-    }
-    slot(id)
-}
+/// The contact points, by id, with the data set each was made from.
+static CPS: Slots<ContactPoint> = Slots::new();
 
 /// Adds a road; returns its id (one more than the largest id in use).
 pub fn add_dataset(road: Road) -> c_int {
@@ -128,29 +72,13 @@ pub fn dataset_ids() -> Vec<c_int> {
 /// one), or -1.
 pub fn create_cp(dataset: c_int) -> c_int {
     let Some(road) = with_dataset(dataset, |d| d.road.clone()) else { return -1 };
-    // The owner path's barrier is registered now, with the contact point, so that the
-    // evaluation calls never make a system call (real-time callers rely on it).
-    crate::barrier::available();
-    let mut table = lock(&CP_TABLE);
-    let id = table.free.last().copied().unwrap_or(table.size);
-    let (Some(s), Ok(c_id)) = (slot_or_create(id), c_int::try_from(id)) else { return -1 };
-    if id == table.size {
-        table.size += 1;
-    } else {
-        table.free.remove(&id);
-    }
-    let mut guard = s.cp.lock();
-    *guard = Some(ContactPoint::new(road));
-    s.dataset.store(dataset, Ordering::Relaxed);
-    guard.count_access(thread_id());
-    c_id
+    CPS.create(dataset, ContactPoint::new(road))
 }
 
 /// Runs `f` on a contact point; `None` for an unknown id.
 #[inline]
 pub fn with_cp<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R) -> Option<R> {
-    let s = slot_of(id)?;
-    s.cp.with_mut(|cp| cp.as_mut().map(f))
+    CPS.with_mut(id, f)
 }
 
 /// Runs `f` on a contact point when this thread owns it; `None` (without running
@@ -158,60 +86,22 @@ pub fn with_cp<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R) -> Option<R
 /// call. `f` must not panic (this runs outside any panic guard).
 #[inline(always)]
 pub fn with_owned_cp_mut<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R) -> Option<R> {
-    let s = slot_of(id)?;
-    s.cp.with_owned_mut(|cp| cp.as_mut().map(f)).flatten()
+    CPS.with_owned_mut(id, f)
 }
 
 /// Deletes one contact point.
 pub fn delete_cp(id: c_int) -> bool {
-    let mut table = lock(&CP_TABLE);
-    let Some((id, s)) = usize::try_from(id).ok().and_then(|i| Some((i, slot(i)?))) else { return false };
-    if s.dataset.load(Ordering::Relaxed) == 0 {
-        return false;
-    }
-    free_slot(&mut table, id, s);
-    true
-}
-
-/// Empties a slot that holds a contact point (the table's lock is held).
-fn free_slot(table: &mut CpTable, id: usize, s: &Slot) {
-    let mut guard = s.cp.lock();
-    *guard = None;
-    s.dataset.store(0, Ordering::Relaxed);
-    // The slot starts over without an owner.
-    guard.disown();
-    drop(guard);
-    table.free.insert(id);
+    CPS.delete(id)
 }
 
 /// Runs `f` on every contact point of a data set (`None`: of every data set).
-fn for_each_cp_of(dataset: Option<c_int>, mut f: impl FnMut(&mut ContactPoint)) {
-    let table = lock(&CP_TABLE);
-    for i in 0..table.size {
-        let Some(s) = slot(i) else { continue };
-        let d = s.dataset.load(Ordering::Relaxed);
-        if d != 0 && dataset.is_none_or(|want| want == d) {
-            if let Some(cp) = s.cp.lock().as_mut() {
-                f(cp);
-            }
-        }
-    }
+fn for_each_cp_of(dataset: Option<c_int>, f: impl FnMut(&mut ContactPoint)) {
+    CPS.for_each_of(dataset, f);
 }
 
 /// Deletes the contact points of one data set, or all of them (and empties the table).
 pub fn delete_cps_of(dataset: Option<c_int>) {
-    let mut table = lock(&CP_TABLE);
-    for i in 0..table.size {
-        let Some(s) = slot(i) else { continue };
-        let d = s.dataset.load(Ordering::Relaxed);
-        if d != 0 && dataset.is_none_or(|want| want == d) {
-            free_slot(&mut table, i, s);
-        }
-    }
-    if dataset.is_none() {
-        table.size = 0;
-        table.free.clear();
-    }
+    CPS.delete_of(dataset);
 }
 
 /// Applies `f` to every contact point.
@@ -223,6 +113,7 @@ pub fn update_all_cps(f: impl FnMut(&mut ContactPoint)) {
 mod tests {
     use super::*;
     use crate::owner::OWNER_STREAK;
+    use crate::thread_id::thread_id;
     use opencrg::settings::opt;
     use opencrg::synth::RoadSpec;
 
@@ -254,15 +145,15 @@ mod tests {
             eprintln!("membarrier is not available here: checking that every call takes the lock");
         }
         let id = new_cp();
-        let s = slot(id as usize).expect("a slot");
-        assert_eq!(s.cp.owner(), 0);
+        let s = CPS.slot(id as usize).expect("a slot");
+        assert_eq!(s.cell.owner(), 0);
         for _ in 0..OWNER_STREAK {
             with_cp(id, bump);
         }
         let expected_owner = if owner_path { thread_id() } else { 0 };
-        assert_eq!(s.cp.owner(), expected_owner);
+        assert_eq!(s.cell.owner(), expected_owner);
         std::thread::spawn(move || with_cp(id, bump)).join().expect("no panic");
-        assert_eq!(s.cp.owner(), 0, "another thread's access revokes the ownership");
+        assert_eq!(s.cell.owner(), 0, "another thread's access revokes the ownership");
         assert_eq!(with_cp(id, |cp| counter(cp)), Some(f64::from(OWNER_STREAK + 1)));
         assert!(delete_cp(id));
         assert_eq!(with_cp(id, |cp| counter(cp)), None);
