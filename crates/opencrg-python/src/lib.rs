@@ -33,6 +33,7 @@ mod tools;
 fn opencrg_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_class::<road::Road>()?;
+    m.add("ReferenceLine", road::reference_line_class(m.py())?)?;
     m.add_class::<contact::ContactPoint>()?;
     m.add_function(wrap_pyfunction!(road::_road_from_recipe, m)?)?;
     m.add_function(wrap_pyfunction!(contact::_contact_point_from_state, m)?)?;

@@ -27,6 +27,17 @@ fn compat(given: Option<&str>) -> PyResult<Compat> {
 /// `ReferenceLine(u, x, y, phi, z)`, a named tuple made once.
 static REFERENCE_LINE: PyOnceLock<Py<PyType>> = PyOnceLock::new();
 
+/// The named tuple `opencrg.ReferenceLine` (`u, x, y, phi, z`).
+pub(crate) fn reference_line_class(py: Python<'_>) -> PyResult<&Bound<'_, PyType>> {
+    let class = REFERENCE_LINE.get_or_try_init(py, || -> PyResult<Py<PyType>> {
+        let namedtuple = py.import("collections")?.getattr("namedtuple")?;
+        let class = namedtuple.call1(("ReferenceLine", ["u", "x", "y", "phi", "z"]))?;
+        class.setattr("__module__", "opencrg")?;
+        Ok(class.cast_into::<PyType>()?.unbind())
+    })?;
+    Ok(class.bind(py))
+}
+
 /// A road loaded from a CRG file (LRFI, LDFI, KRBI or KDBI), following its file
 /// references.
 ///
@@ -278,18 +289,13 @@ impl Road {
     /// arrays `(u, x, y, phi, z)`.
     #[getter]
     fn reference_line<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let class = REFERENCE_LINE.get_or_try_init(py, || -> PyResult<Py<PyType>> {
-            let namedtuple = py.import("collections")?.getattr("namedtuple")?;
-            let class = namedtuple.call1(("ReferenceLine", ["u", "x", "y", "phi", "z"]))?;
-            class.setattr("__module__", "opencrg")?;
-            Ok(class.cast_into::<PyType>()?.unbind())
-        })?;
+        let class = reference_line_class(py)?;
         let l = self.inner.reference_line();
         let each = |f: &dyn Fn(usize) -> f64| (0..l.n).map(f).collect::<Vec<f64>>();
         let columns =
             [each(&|i| l.u_at(i)), l.x.clone(), l.y.clone(), each(&|i| l.heading_at(i)), each(&|i| l.z_at(i))];
         let arrays = columns.iter().map(|c| frozen(py, c)).collect::<PyResult<Vec<_>>>()?;
-        class.bind(py).call1(PyTuple::new(py, arrays)?)
+        class.call1(PyTuple::new(py, arrays)?)
     }
 
     /// The header sections as read: `comments` ($CT lines), `road_crg` ($ROAD_CRG

@@ -6,6 +6,8 @@ from typing import Callable, NamedTuple, Optional, Union, overload
 import numpy as np
 import numpy.typing as npt
 
+from . import odr as odr
+
 __version__: str
 
 OPTIONS: list[str]
