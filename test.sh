@@ -40,12 +40,16 @@ ctest --test-dir build --output-on-failure -j"$(nproc)"
 c-tests/cross/run.sh windows
 c-tests/cross/run.sh arm
 # The .glb export of the demo road (curved, sloped, banked), whole, a part and simplified,
-# against the Khronos glTF validator, from the npm registry.
+# and of the demo map (the demo road laid on a road of an OpenDRIVE map), against the
+# Khronos glTF validator, from the npm registry.
 npm install --silent --no-save --prefix target/gltf-validator gltf-validator >/dev/null
 target/release/opencrg export examples/data/demo_road.crg target/demo_road.glb
 target/release/opencrg export examples/data/demo_road.crg target/demo_part.glb --u 30:60 --v -1:2
 target/release/opencrg export examples/data/demo_road.crg target/demo_simple.glb --max-error 0.002
-NODE_PATH=target/gltf-validator/node_modules node crates/opencrg-cli/tests/validate_glb.js target/demo_road.glb target/demo_part.glb target/demo_simple.glb
+target/release/opencrg odr export examples/data/demo_map.xodr target/demo_map.glb
+target/release/opencrg odr export examples/data/demo_map.xodr target/demo_map_simple.glb --max-error 0.005
+NODE_PATH=target/gltf-validator/node_modules node crates/opencrg-cli/tests/validate_glb.js target/demo_road.glb \
+    target/demo_part.glb target/demo_simple.glb target/demo_map.glb target/demo_map_simple.glb
 # The README's georeferenced road: its start in WGS 84 and its GeoJSON (valid JSON, the
 # reference line's first position that start).
 target/release/opencrg info examples/data/demo_road_utm.crg --json >target/demo_road_utm.json

@@ -1,10 +1,12 @@
 //! `opencrg odr`: OpenDRIVE maps with CRG surfaces. `info` says what a map holds, `check`
 //! applies the rules of its CRG records and roads, `eval` answers height, friction, road,
-//! s and t at world points read from stdin, `render` draws the map's heights.
+//! s and t at world points read from stdin, `render` draws the map's heights, `export`
+//! writes the drivable surface as a mesh.
 
 use clap::Subcommand;
+use opencrg::mesh_files::{write_mesh, MeshFormat};
 use opencrg::Budget;
-use opencrg_odr::{CrgMode, Map, Surface};
+use opencrg_odr::{map_mesh, CrgMode, Map, MeshOptions, Surface};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -40,6 +42,23 @@ pub enum OdrCommand {
         /// Pixels on the longer side of the picture (16 to 20000).
         #[arg(long, default_value_t = 1200)]
         size: usize,
+    },
+    /// The drivable surface as a mesh (.glb, .obj, .ply or .stl), CRG records laid on.
+    Export {
+        /// The OpenDRIVE map (.xodr).
+        map: PathBuf,
+        /// The file to write; its extension names the format.
+        output: PathBuf,
+        /// Only these roads (ids, comma-separated).
+        #[arg(long, value_delimiter = ',', value_name = "ID,...")]
+        roads: Option<Vec<String>>,
+        /// Only lanes of these types (comma-separated; default every type but `none`).
+        #[arg(long, value_delimiter = ',', value_name = "TYPE,...")]
+        lanes: Option<Vec<String>>,
+        /// Keep the mesh within this many metres of the surface's samples, CRG detail thinned
+        /// (default: CRG detail at its grid's resolution, 1 mm elsewhere).
+        #[arg(long, value_name = "METRES")]
+        max_error: Option<f64>,
     },
 }
 
@@ -210,6 +229,30 @@ fn render(path: &Path, output: &Path, size: usize, budget: &Budget) -> Result<()
     Ok(())
 }
 
+fn export(path: &Path, output: &Path, options: &MeshOptions, budget: &Budget) -> Result<(), String> {
+    let format = MeshFormat::from_path(output).ok_or_else(|| {
+        format!("{}: the output's extension names its format: .glb, .obj, .ply or .stl", output.display())
+    })?;
+    let surface = Arc::new(Surface::load(path).map_err(|e| e.to_string())?);
+    let spinner = indicatif::ProgressBar::new_spinner().with_message("meshing the map");
+    spinner.enable_steady_tick(std::time::Duration::from_millis(200));
+    let mesh = map_mesh(&surface, options, budget);
+    spinner.finish_and_clear();
+    let mesh = mesh.map_err(|e| e.to_string())?;
+    if mesh.triangles.is_empty() {
+        return Err(format!("{}: no lane of the roads and types chosen to mesh", path.display()));
+    }
+    write_mesh(&mesh, output, format).map_err(|e| e.to_string())?;
+    eprintln!(
+        "{}: {} vertices, {} triangles, {} lanes of lane sections",
+        output.display(),
+        mesh.positions.len(),
+        mesh.triangles.len(),
+        mesh.groups.iter().filter(|g| !g.triangles.is_empty()).count()
+    );
+    Ok(())
+}
+
 /// Runs an `odr` command; the exit status.
 pub fn run(command: OdrCommand, budget: &Budget) -> Result<ExitCode, String> {
     match command {
@@ -228,6 +271,10 @@ pub fn run(command: OdrCommand, budget: &Budget) -> Result<ExitCode, String> {
         }
         OdrCommand::Eval { map } => eval(&map)?,
         OdrCommand::Render { map, output, size } => render(&map, &output, size, budget)?,
+        OdrCommand::Export { map, output, roads, lanes, max_error } => {
+            let options = MeshOptions { roads, lane_types: lanes, max_error };
+            export(&map, &output, &options, budget)?
+        }
     }
     Ok(ExitCode::SUCCESS)
 }

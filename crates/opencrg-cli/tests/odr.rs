@@ -154,3 +154,49 @@ fn render_draws_the_map() {
         opencrg(&["odr", "render", &shared("esmini/fabriksgatan.xodr"), out.to_str().unwrap(), "--size", "4"], "");
     assert_eq!(refused.status.code(), Some(2));
 }
+
+#[test]
+fn export_writes_the_lanes_as_parts_of_one_mesh() {
+    let d = dir("export");
+    let glb = d.join("map.glb");
+    let map = shared("esmini/fabriksgatan.xodr");
+    let out = opencrg(&["odr", "export", &map, glb.to_str().unwrap()], "");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let bytes = std::fs::read(&glb).unwrap();
+    assert_eq!(&bytes[..4], b"glTF");
+    let json_len = u32::from_le_bytes(bytes[12..16].try_into().unwrap()) as usize;
+    let doc: serde_json::Value = serde_json::from_slice(&bytes[20..20 + json_len]).unwrap();
+    let primitives = doc["meshes"][0]["primitives"].as_array().unwrap();
+    assert!(primitives.len() > 10, "{} primitives", primitives.len());
+    for p in primitives {
+        let a = &p["attributes"];
+        for name in ["POSITION", "NORMAL", "TEXCOORD_0", "_FRICTION", "_ROAD", "_LANE", "_S", "_T"] {
+            assert!(a[name].is_u64(), "{name} missing: {p}");
+        }
+        let extras = &p["extras"];
+        assert!(extras["road"].is_string() && extras["lane"].is_i64() && extras["type"].is_string(), "{extras}");
+        assert!(extras["type"] != "none");
+    }
+    // One road, as OBJ: its lanes as groups.
+    let road = opencrg_odr::Map::load(&map).unwrap().roads[0].id.clone();
+    let obj = d.join("road.obj");
+    let out = opencrg(&["odr", "export", &map, obj.to_str().unwrap(), "--roads", &road, "--lanes", "driving"], "");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = std::fs::read_to_string(&obj).unwrap();
+    let groups: Vec<&str> = text.lines().filter(|l| l.starts_with("g ")).collect();
+    assert!(!groups.is_empty() && groups.iter().all(|g| g.starts_with(&format!("g road_{road}_lane_"))), "{groups:?}");
+    // Refused: an unknown road, an unknown format, a bound that is no bound; nothing written.
+    for (args, what) in
+        [(vec!["--roads", "no-such-road"], "no road 'no-such-road'"), (vec!["--max-error", "-1"], "positive number")]
+    {
+        let target = d.join("refused.glb");
+        let mut all = vec!["odr", "export", &map, target.to_str().unwrap()];
+        all.extend(args);
+        let out = opencrg(&all, "");
+        assert_eq!(out.status.code(), Some(2));
+        assert!(String::from_utf8_lossy(&out.stderr).contains(what), "{}", String::from_utf8_lossy(&out.stderr));
+        assert!(!target.exists());
+    }
+    let out = opencrg(&["odr", "export", &map, d.join("map.xyz").to_str().unwrap()], "");
+    assert_eq!(out.status.code(), Some(2));
+}

@@ -72,6 +72,24 @@ impl Surface {
         &self.map
     }
 
+    /// Where on road `road` (index) the elevation records start and end (s).
+    pub(crate) fn crg_bounds(&self, road: usize) -> impl Iterator<Item = f64> + '_ {
+        self.layers[road]
+            .iter()
+            .filter(|(r, _)| r.purpose == CrgPurpose::Elevation)
+            .flat_map(|(r, _)| [r.s_start, r.s_end])
+    }
+
+    /// The grid increments (du, dv) of the CRG file whose elevation record holds at s of
+    /// road `road` (index), if one does.
+    pub(crate) fn elevation_detail(&self, road: usize, s: f64) -> Option<(f64, f64)> {
+        let (_, k) = self.layers[road]
+            .iter()
+            .rev()
+            .find(|(r, _)| r.purpose == CrgPurpose::Elevation && r.s_start <= s && s <= r.s_end)?;
+        Some(self.files.files[*k].whole.increments())
+    }
+
     /// A probe for one wheel (or thread).
     pub fn probe(self: &Arc<Self>) -> Probe {
         Probe { surface: self.clone(), track: Track::default(), points: CrgPoints::new(&self.files) }

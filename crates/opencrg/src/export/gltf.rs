@@ -1,15 +1,32 @@
 //! Meshes as binary glTF 2.0 (`.glb`): one node holding one mesh, y up (glTF's x is the
 //! road's x, its y the road's z, its z minus the road's y), positions relative to the
 //! node's translation so that single precision keeps millimetres at survey coordinates;
-//! normals and texture coordinates (u and v, scaled to 0..1) per vertex; triangles as
-//! 32-bit indices.
+//! normals and texture coordinates (u and v, scaled to 0..1) per vertex, and the mesh's
+//! own values per vertex as attributes `_NAME`; triangles as 32-bit indices, one
+//! primitive per group of the mesh (its name and what it is in the primitive's `extras`).
 
-use crate::mesh::Mesh;
+use crate::mesh::{Mesh, MeshGroup};
 use std::io::{self, Write};
 
 /// glTF's frame from the road's: (x, y, z) to (x, z, -y).
 fn y_up(p: [f64; 3]) -> [f64; 3] {
     [p[0], p[2], -p[1]]
+}
+
+/// `text` as a JSON string.
+fn json_string(text: &str) -> String {
+    let mut out = String::with_capacity(text.len() + 2);
+    out.push('"');
+    for c in text.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
 }
 
 /// A JSON number: integers as such, others in Rust's shortest round-trip form.
@@ -58,6 +75,13 @@ pub(crate) fn glb(mesh: &Mesh, out: &mut impl Write) -> io::Result<()> {
             bin.extend_from_slice(&i.to_le_bytes());
         }
     }
+    let mut values_at = Vec::new();
+    for v in &mesh.values {
+        values_at.push(bin.len());
+        for x in &v.values {
+            bin.extend_from_slice(&x.to_le_bytes());
+        }
+    }
     let total = bin.len();
     while bin.len() % 4 != 0 {
         bin.push(0);
@@ -66,36 +90,65 @@ pub(crate) fn glb(mesh: &Mesh, out: &mut impl Write) -> io::Result<()> {
         (lo, hi) = ([0.0; 3], [0.0; 3]);
     }
     let f32s = |v: [f32; 3]| format!("[{},{},{}]", num(v[0].into()), num(v[1].into()), num(v[2].into()));
+    // The parts: the mesh's groups with triangles, or one of every triangle.
+    let whole = [MeshGroup { name: String::new(), triangles: 0..mesh.triangles.len(), extras: String::new() }];
+    let groups: Vec<&MeshGroup> =
+        if mesh.groups.is_empty() { whole.iter().collect() } else { mesh.groups.iter().collect() };
+    let groups: Vec<&MeshGroup> = groups.into_iter().filter(|g| !g.triangles.is_empty()).collect();
+    let mut views = vec![
+        format!(r#"{{"buffer":0,"byteOffset":0,"byteLength":{},"target":34962}}"#, n * 12),
+        format!(r#"{{"buffer":0,"byteOffset":{normals_at},"byteLength":{},"target":34962}}"#, n * 12),
+        format!(r#"{{"buffer":0,"byteOffset":{texcoords_at},"byteLength":{},"target":34962}}"#, n * 8),
+        format!(
+            r#"{{"buffer":0,"byteOffset":{indices_at},"byteLength":{},"target":34963}}"#,
+            mesh.triangles.len() * 12
+        ),
+    ];
+    let mut accessors = vec![
+        format!(
+            r#"{{"bufferView":0,"componentType":5126,"count":{n},"type":"VEC3","min":{},"max":{}}}"#,
+            f32s(lo),
+            f32s(hi)
+        ),
+        format!(r#"{{"bufferView":1,"componentType":5126,"count":{n},"type":"VEC3"}}"#),
+        format!(r#"{{"bufferView":2,"componentType":5126,"count":{n},"type":"VEC2"}}"#),
+    ];
+    let mut attributes = r#""POSITION":0,"NORMAL":1,"TEXCOORD_0":2"#.to_string();
+    for (v, at) in mesh.values.iter().zip(&values_at) {
+        attributes += &format!(r#","_{}":{}"#, v.name.to_ascii_uppercase(), accessors.len());
+        accessors.push(format!(r#"{{"bufferView":{},"componentType":5126,"count":{n},"type":"SCALAR"}}"#, views.len()));
+        views.push(format!(r#"{{"buffer":0,"byteOffset":{at},"byteLength":{},"target":34962}}"#, n * 4));
+    }
+    let mut primitives = Vec::new();
+    for g in &groups {
+        let extras = match (g.name.is_empty(), g.extras.is_empty()) {
+            (true, true) => String::new(),
+            (true, false) => format!(r#","extras":{{{}}}"#, g.extras),
+            (false, true) => format!(r#","extras":{{"name":{}}}"#, json_string(&g.name)),
+            (false, false) => format!(r#","extras":{{"name":{},{}}}"#, json_string(&g.name), g.extras),
+        };
+        primitives.push(format!(r#"{{"attributes":{{{attributes}}},"indices":{},"mode":4{extras}}}"#, accessors.len()));
+        accessors.push(format!(
+            r#"{{"bufferView":3,"byteOffset":{},"componentType":5125,"count":{},"type":"SCALAR"}}"#,
+            g.triangles.start * 12,
+            g.triangles.len() * 3
+        ));
+    }
     let json = format!(
         concat!(
             r#"{{"asset":{{"version":"2.0","generator":"opencrg {version}"}},"scene":0,"scenes":[{{"nodes":[0]}}],"#,
             r#""nodes":[{{"name":"road","mesh":0,"translation":[{tx},{ty},{tz}]}}],"#,
-            r#""meshes":[{{"name":"road surface","primitives":[{{"attributes":{{"POSITION":0,"NORMAL":1,"TEXCOORD_0":2}},"indices":3,"mode":4}}]}}],"#,
-            r#""buffers":[{{"byteLength":{total}}}],"#,
-            r#""bufferViews":[{{"buffer":0,"byteOffset":0,"byteLength":{pos_len},"target":34962}},"#,
-            r#"{{"buffer":0,"byteOffset":{normals_at},"byteLength":{pos_len},"target":34962}},"#,
-            r#"{{"buffer":0,"byteOffset":{texcoords_at},"byteLength":{tex_len},"target":34962}},"#,
-            r#"{{"buffer":0,"byteOffset":{indices_at},"byteLength":{idx_len},"target":34963}}],"#,
-            r#""accessors":[{{"bufferView":0,"componentType":5126,"count":{n},"type":"VEC3","min":{lo},"max":{hi}}},"#,
-            r#"{{"bufferView":1,"componentType":5126,"count":{n},"type":"VEC3"}},"#,
-            r#"{{"bufferView":2,"componentType":5126,"count":{n},"type":"VEC2"}},"#,
-            r#"{{"bufferView":3,"componentType":5125,"count":{idx},"type":"SCALAR"}}]}}"#
+            r#""meshes":[{{"name":"road surface","primitives":[{primitives}]}}],"#,
+            r#""buffers":[{{"byteLength":{total}}}],"bufferViews":[{views}],"accessors":[{accessors}]}}"#
         ),
         version = env!("CARGO_PKG_VERSION"),
         tx = num(origin[0]),
         ty = num(origin[1]),
         tz = num(origin[2]),
+        primitives = primitives.join(","),
         total = total,
-        pos_len = n * 12,
-        normals_at = normals_at,
-        texcoords_at = texcoords_at,
-        tex_len = n * 8,
-        indices_at = indices_at,
-        idx_len = mesh.triangles.len() * 12,
-        n = n,
-        lo = f32s(lo),
-        hi = f32s(hi),
-        idx = mesh.triangles.len() * 3,
+        views = views.join(","),
+        accessors = accessors.join(","),
     );
     let mut json = json.into_bytes();
     while json.len() % 4 != 0 {

@@ -30,6 +30,33 @@ pub struct Mesh {
     pub u: Vec<f64>,
     /// The v of the long sections (m); empty for a simplified mesh.
     pub v: Vec<f64>,
+    /// Named parts of the triangles, in order, each a glTF primitive and an OBJ group;
+    /// empty: one part of every triangle.
+    pub groups: Vec<MeshGroup>,
+    /// Numbers per vertex of the mesh's own (one per vertex each): glTF attributes
+    /// `_NAME` (upper case), PLY properties `name`.
+    pub values: Vec<VertexValues>,
+}
+
+/// A named part of a mesh's triangles.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct MeshGroup {
+    /// Its name (an OBJ group's, a glTF primitive's `extras.name`).
+    pub name: String,
+    /// Its triangles: a range of [`Mesh::triangles`].
+    pub triangles: std::ops::Range<usize>,
+    /// What it is, as the members of a JSON object (`"road":"12","lane":-1`), written to
+    /// its glTF primitive's `extras` with its name.
+    pub extras: String,
+}
+
+/// A number at each vertex of a mesh, under a name.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct VertexValues {
+    /// Its name: lower case letters, digits and `_`.
+    pub name: String,
+    /// One value per vertex.
+    pub values: Vec<f32>,
 }
 
 /// The grid nodes of the road within `range` (inclusive), as indices into `nodes`.
@@ -99,6 +126,7 @@ pub fn grid_mesh_every(
         triangles: Vec::new(),
         u: us.to_vec(),
         v: vs.to_vec(),
+        ..Mesh::default()
     };
     for &u in us {
         for &v in vs {

@@ -80,9 +80,20 @@ fn obj(mesh: &Mesh, out: &mut impl Write) -> io::Result<()> {
     for t in &mesh.texcoords {
         writeln!(out, "vt {} {}", t[0], t[1])?;
     }
-    for t in &mesh.triangles {
+    let face = |out: &mut dyn Write, t: &[u32; 3]| {
         let [a, b, c] = t.map(|i| i + 1);
-        writeln!(out, "f {a}/{a}/{a} {b}/{b}/{b} {c}/{c}/{c}")?;
+        writeln!(out, "f {a}/{a}/{a} {b}/{b}/{b} {c}/{c}/{c}")
+    };
+    if mesh.groups.is_empty() {
+        for t in &mesh.triangles {
+            face(out, t)?;
+        }
+    }
+    for g in &mesh.groups {
+        writeln!(out, "g {}", g.name.replace(char::is_whitespace, "_"))?;
+        for t in &mesh.triangles[g.triangles.clone()] {
+            face(out, t)?;
+        }
     }
     Ok(())
 }
@@ -112,21 +123,22 @@ fn stl(mesh: &Mesh, out: &mut impl Write) -> io::Result<()> {
 }
 
 fn ply(mesh: &Mesh, out: &mut impl Write) -> io::Result<()> {
+    let extra: String = mesh.values.iter().map(|v| format!("property float {}\n", v.name)).collect();
     write!(
         out,
         "ply\nformat binary_little_endian 1.0\ncomment road surface written by opencrg {}\n\
          element vertex {}\nproperty double x\nproperty double y\nproperty double z\n\
-         property float nx\nproperty float ny\nproperty float nz\nproperty float s\nproperty float t\n\
+         property float nx\nproperty float ny\nproperty float nz\nproperty float s\nproperty float t\n{extra}\
          element face {}\nproperty list uchar uint vertex_indices\nend_header\n",
         env!("CARGO_PKG_VERSION"),
         mesh.positions.len(),
         mesh.triangles.len()
     )?;
-    for ((p, n), t) in mesh.positions.iter().zip(&mesh.normals).zip(&mesh.texcoords) {
+    for (i, ((p, n), t)) in mesh.positions.iter().zip(&mesh.normals).zip(&mesh.texcoords).enumerate() {
         for x in p {
             out.write_all(&x.to_le_bytes())?;
         }
-        for x in n.iter().chain(t) {
+        for x in n.iter().chain(t).chain(mesh.values.iter().map(|v| &v.values[i])) {
             out.write_all(&x.to_le_bytes())?;
         }
     }
