@@ -70,6 +70,18 @@ timeout 120 chromium --headless --no-sandbox --disable-gpu --use-angle=swiftshad
     --user-data-dir="$PWD/target/chromium-profile" --window-size=900,600 --virtual-time-budget=3000 \
     --screenshot="$PWD/target/demo_view.png" "file://$PWD/target/demo_view.html" >/dev/null 2>&1
 python3 crates/opencrg-cli/tests/check_view.py target/demo_view.png
+# The demo map's view: drawn (its CRG record outlined), and the point it reads agrees
+# with odr eval.
+target/release/opencrg odr view examples/data/demo_map.xodr target/demo_map_view.html
+for shot in --screenshot="$PWD/target/demo_map_view.png" --dump-dom; do
+    rm -rf target/chromium-profile
+    timeout 120 chromium --headless --no-sandbox --disable-gpu --use-angle=swiftshader --enable-unsafe-swiftshader \
+        --disable-background-networking --disable-component-update --disable-sync --no-first-run \
+        --user-data-dir="$PWD/target/chromium-profile" --window-size=900,600 --virtual-time-budget=3000 \
+        "$shot" "file://$PWD/target/demo_map_view.html#probe" >target/demo_map_view.dom 2>/dev/null
+done
+python3 crates/opencrg-cli/tests/check_view.py target/demo_map_view.png
+python3 crates/opencrg-cli/tests/check_odr_view.py target/demo_map_view.dom examples/data/demo_map.xodr target/release/opencrg
 # The Python wheel as users get it: manylinux2014 (glibc 2.17), abi3, linked by zig.
 python3 -m venv target/python-build
 target/python-build/bin/pip install -q --upgrade pip

@@ -19,6 +19,7 @@
 //! opencrg odr info MAP [--json]                  opencrg odr check MAP
 //! opencrg odr eval MAP < points                 opencrg odr render MAP OUT.png [--size PX]
 //! opencrg odr export MAP OUT.glb [--roads ID,..] [--lanes TYPE,..] [--max-error M]
+//! opencrg odr view MAP OUT.html [--roads ID,..] [--max-error M]
 //! ```
 //!
 //! Bad input gives one line on stderr and exit status 2; a road that fails its checks

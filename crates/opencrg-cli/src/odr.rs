@@ -1,10 +1,10 @@
 //! `opencrg odr`: OpenDRIVE maps with CRG surfaces. `info` says what a map holds, `check`
 //! applies the rules of its CRG records and roads, `eval` answers height, friction, road,
 //! s and t at world points read from stdin, `render` draws the map's heights, `export`
-//! writes the drivable surface as a mesh.
+//! writes the drivable surface as a mesh, `view` shows it in the browser.
 
 use clap::Subcommand;
-use opencrg::mesh_files::{write_mesh, MeshFormat};
+use opencrg::mesh_files::{write_mesh, write_whole, MeshFormat};
 use opencrg::Budget;
 use opencrg_odr::{map_mesh, CrgMode, Map, MeshOptions, Surface};
 use std::io::Write;
@@ -59,6 +59,20 @@ pub enum OdrCommand {
         /// (default: CRG detail at its grid's resolution, 1 mm elsewhere).
         #[arg(long, value_name = "METRES")]
         max_error: Option<f64>,
+    },
+    /// One self-contained HTML file showing the map in 3D (WebGL, works offline): CRG
+    /// records outlined, click a point to read road, lane, s, t, height and friction.
+    View {
+        /// The OpenDRIVE map (.xodr).
+        map: PathBuf,
+        /// The HTML file to write.
+        output: PathBuf,
+        /// Only these roads (ids, comma-separated).
+        #[arg(long, value_delimiter = ',', value_name = "ID,...")]
+        roads: Option<Vec<String>>,
+        /// The mesh's bound (m): CRG detail thinned to it.
+        #[arg(long, value_name = "METRES", default_value_t = 0.005)]
+        max_error: f64,
     },
 }
 
@@ -253,6 +267,32 @@ fn export(path: &Path, output: &Path, options: &MeshOptions, budget: &Budget) ->
     Ok(())
 }
 
+fn view(path: &Path, output: &Path, options: &MeshOptions, budget: &Budget) -> Result<(), String> {
+    let surface = Arc::new(Surface::load(path).map_err(|e| e.to_string())?);
+    let mesh = map_mesh(&surface, options, budget).map_err(|e| e.to_string())?;
+    if mesh.triangles.is_empty() {
+        return Err(format!("{}: no lane of the roads chosen to show", path.display()));
+    }
+    let chosen = |road: usize| options.roads.as_ref().is_none_or(|ids| ids.contains(&surface.map().roads[road].id));
+    let outlines: Vec<Vec<[f64; 3]>> =
+        surface.crg_outlines().into_iter().filter(|(road, ..)| chosen(*road)).map(|(_, _, line)| line).collect();
+    let ids: Vec<&str> = surface.map().roads.iter().map(|r| r.id.as_str()).collect();
+    let names = serde_json::json!({ "road": ids }).to_string();
+    let name = path.file_name().map_or_else(|| path.display().to_string(), |n| n.to_string_lossy().into_owned());
+    let info = format!(
+        "{} &middot; {} roads, {} CRG records (outlined) &middot; {} vertices, {} triangles",
+        crate::view::escape(&name),
+        surface.map().roads.len(),
+        outlines.len(),
+        mesh.positions.len(),
+        mesh.triangles.len()
+    );
+    let page = crate::view::page(&mesh, &name, &info, &outlines, &names)?;
+    write_whole(output, |w| w.write_all(page.as_bytes())).map_err(|e| e.to_string())?;
+    eprintln!("{}: {} vertices, {} triangles", output.display(), mesh.positions.len(), mesh.triangles.len());
+    Ok(())
+}
+
 /// Runs an `odr` command; the exit status.
 pub fn run(command: OdrCommand, budget: &Budget) -> Result<ExitCode, String> {
     match command {
@@ -274,6 +314,10 @@ pub fn run(command: OdrCommand, budget: &Budget) -> Result<ExitCode, String> {
         OdrCommand::Export { map, output, roads, lanes, max_error } => {
             let options = MeshOptions { roads, lane_types: lanes, max_error };
             export(&map, &output, &options, budget)?
+        }
+        OdrCommand::View { map, output, roads, max_error } => {
+            let options = MeshOptions { roads, lane_types: None, max_error: Some(max_error) };
+            view(&map, &output, &options, budget)?
         }
     }
     Ok(ExitCode::SUCCESS)

@@ -10,8 +10,37 @@ use opencrg::{Budget, ContactPoint};
 use std::io::Write;
 use std::path::Path;
 
-/// The viewer page; `__TITLE__`, `__INFO__`, `__GLB__` and `__LINE__` are filled in.
+/// The viewer page; `__TITLE__`, `__INFO__`, `__GLB__`, `__LINES__` (polylines of x/y/z
+/// points, null for a missing height) and `__NAMES__` (names of the mesh's values, as
+/// `{"road": [ids]}`) are filled in.
 const PAGE: &str = include_str!("viewer.html");
+
+/// The viewer page of `mesh` with `lines` over it; `info` (HTML) heads it.
+pub fn page(
+    mesh: &opencrg::mesh::Mesh,
+    title: &str,
+    info: &str,
+    lines: &[Vec<[f64; 3]>],
+    names: &str,
+) -> Result<String, String> {
+    let mut glb = Vec::new();
+    write_mesh_to(mesh, &mut glb, MeshFormat::Glb).map_err(|e| e.to_string())?;
+    let number = |x: f64| if x.is_finite() { format!("{x:?}") } else { "null".into() };
+    let lines: Vec<String> = lines
+        .iter()
+        .map(|l| {
+            let points: Vec<String> =
+                l.iter().map(|p| format!("[{},{},{}]", number(p[0]), number(p[1]), number(p[2]))).collect();
+            format!("[{}]", points.join(","))
+        })
+        .collect();
+    Ok(PAGE
+        .replace("__TITLE__", &escape(title))
+        .replace("__INFO__", info)
+        .replace("__LINES__", &format!("[{}]", lines.join(",")))
+        .replace("__NAMES__", names)
+        .replace("__GLB__", &base64(&glb)))
+}
 
 /// Standard base64 of `data`.
 fn base64(data: &[u8]) -> String {
@@ -32,7 +61,7 @@ fn base64(data: &[u8]) -> String {
 }
 
 /// Text safe inside an HTML element.
-fn escape(text: &str) -> String {
+pub fn escape(text: &str) -> String {
     text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")
 }
 
@@ -50,16 +79,14 @@ pub fn view(
     let nodes = road.grid().nu.saturating_mul(road.grid().nv);
     let step = nodes.div_ceil(max_vertices.max(1)).max(1);
     let mesh = grid_mesh_every(cp, u, v, step, budget).map_err(|e| e.to_string())?;
-    let mut glb = Vec::new();
-    write_mesh_to(&mesh, &mut glb, MeshFormat::Glb).map_err(|e| e.to_string())?;
     // The reference line over the mesh's u range, at most 4000 points.
     let line = road.reference_line();
     let (u0, u1) = (mesh.u[0], mesh.u[mesh.u.len() - 1]);
     let inside: Vec<usize> = (0..line.n).filter(|&i| (u0..=u1).contains(&line.u_at(i))).collect();
-    let points: Vec<String> = inside
+    let points: Vec<[f64; 3]> = inside
         .iter()
         .step_by(inside.len().div_ceil(4000).max(1))
-        .map(|&i| format!("[{:?},{:?},{:?}]", line.x[i], line.y[i], line.z_at(i)))
+        .map(|&i| [line.x[i], line.y[i], line.z_at(i)])
         .collect();
     let info = format!(
         "{} &middot; u {u0:.2} to {u1:.2} m &middot; {} vertices, {} triangles{}",
@@ -68,11 +95,7 @@ pub fn view(
         mesh.triangles.len(),
         if step > 1 { format!(" (every {step}th cross section)") } else { String::new() }
     );
-    let page = PAGE
-        .replace("__TITLE__", &escape(name))
-        .replace("__INFO__", &info)
-        .replace("__LINE__", &format!("[{}]", points.join(",")))
-        .replace("__GLB__", &base64(&glb));
+    let page = page(&mesh, name, &info, &[points], "{}")?;
     write_whole(out, |w| w.write_all(page.as_bytes())).map_err(|e| e.to_string())?;
     Ok(format!("{}: {} vertices, {} triangles", out.display(), mesh.positions.len(), mesh.triangles.len()))
 }

@@ -90,6 +90,31 @@ impl Surface {
         Some(self.files.files[*k].whole.increments())
     }
 
+    /// The outline of every CRG record's area in world x/y/z (heights from the ground,
+    /// NaN off every road), closed polylines, with the road (index) it is drawn on and
+    /// the record's purpose.
+    pub fn crg_outlines(self: &Arc<Self>) -> Vec<(usize, CrgPurpose, Vec<[f64; 3]>)> {
+        let mut probe = self.probe();
+        let mut out = Vec::new();
+        for (i, road) in self.map.roads.iter().enumerate() {
+            // A junction's records are drawn once, on the first of its roads.
+            let first_of_junction = road
+                .junction
+                .as_ref()
+                .is_none_or(|j| self.map.roads.iter().position(|r| r.junction.as_ref() == Some(j)) == Some(i));
+            for (record, k) in &self.layers[i] {
+                let own = road.crg.contains(record);
+                if !own && !first_of_junction {
+                    continue;
+                }
+                let line = crg::outline(record, &self.files.files[*k], road);
+                let with_z = line.iter().map(|&[x, y]| [x, y, probe.ground(x, y).map_or(f64::NAN, |g| g.z)]).collect();
+                out.push((i, record.purpose, with_z));
+            }
+        }
+        out
+    }
+
     /// A probe for one wheel (or thread).
     pub fn probe(self: &Arc<Self>) -> Probe {
         Probe { surface: self.clone(), track: Track::default(), points: CrgPoints::new(&self.files) }
