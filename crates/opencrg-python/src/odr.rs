@@ -6,6 +6,7 @@
 
 use crate::arrays::Points;
 use crate::errors::{request_error, to_py};
+use crate::road::matrix;
 use numpy::{PyArray1, PyArrayMethods};
 use opencrg_odr::Surface;
 use pyo3::prelude::*;
@@ -141,6 +142,63 @@ impl Map {
         points.results(py, out.into())
     }
 
+    /// The drivable surface as a mesh (see the guide): a dict of numpy arrays `positions`
+    /// (n x 3 float64, world x/y/z), `normals` (n x 3 float32), `texcoords` (n x 2
+    /// float32: s over the road's length, lambda across the lane), `triangles` (m x 3
+    /// uint32), per vertex `friction` (-1 where none), `road` (index into `road_ids`),
+    /// `lane`, `s`, `t` (float32), and `groups`: one dict per lane of a lane section
+    /// (`name`, `road`, `lane`, `section`, `type`, `triangles`: its first and end index).
+    /// `roads`: ids; `lanes`: types (default every type but `none`); `max_error` (m): the
+    /// CRG detail thinned to it (default: at the CRG grid's resolution, 1 mm elsewhere).
+    #[pyo3(signature = (max_error = None, roads = None, lanes = None, *, max_memory = None))]
+    fn to_mesh<'py>(
+        &self,
+        py: Python<'py>,
+        max_error: Option<f64>,
+        roads: Option<Vec<String>>,
+        lanes: Option<Vec<String>>,
+        max_memory: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let mesh = self.mesh(py, max_error, roads, lanes, max_memory)?;
+        let d = PyDict::new(py);
+        d.set_item("positions", matrix(py, &mesh.positions)?)?;
+        d.set_item("normals", matrix(py, &mesh.normals)?)?;
+        d.set_item("texcoords", matrix(py, &mesh.texcoords)?)?;
+        d.set_item("triangles", matrix(py, &mesh.triangles)?)?;
+        for v in &mesh.values {
+            d.set_item(&v.name, PyArray1::from_slice(py, &v.values))?;
+        }
+        let groups = pyo3::types::PyList::empty(py);
+        for g in &mesh.groups {
+            let item: Bound<'py, PyDict> =
+                py.import("json")?.getattr("loads")?.call1((format!("{{{}}}", g.extras),))?.cast_into()?;
+            item.set_item("name", &g.name)?;
+            item.set_item("triangles", (g.triangles.start, g.triangles.end))?;
+            groups.append(item)?;
+        }
+        d.set_item("groups", groups)?;
+        Ok(d)
+    }
+
+    /// Writes the mesh of `to_mesh` to `path`, the format from its extension: `.glb`,
+    /// `.obj`, `.ply` or `.stl`.
+    #[pyo3(signature = (path, max_error = None, roads = None, lanes = None, *, max_memory = None))]
+    fn write_mesh<'py>(
+        &self,
+        py: Python<'py>,
+        path: PathBuf,
+        max_error: Option<f64>,
+        roads: Option<Vec<String>>,
+        lanes: Option<Vec<String>>,
+        max_memory: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<()> {
+        let format = opencrg::mesh_files::MeshFormat::from_path(&path).ok_or_else(|| {
+            request_error(format!("{}: unknown mesh format; .glb, .obj, .ply or .stl", path.display()))
+        })?;
+        let mesh = self.mesh(py, max_error, roads, lanes, max_memory)?;
+        py.detach(|| opencrg::mesh_files::write_mesh(&mesh, &path, format)).map_err(to_py)
+    }
+
     /// The world point (x, y, z) of the surface at (s, t) of the road `road` (its id),
     /// CRG records laid on.
     fn st_to_xyz<'py>(
@@ -166,6 +224,23 @@ impl Map {
             }
         });
         points.results(py, out.into())
+    }
+}
+
+impl Map {
+    /// The map's mesh for `to_mesh` and `write_mesh`.
+    fn mesh(
+        &self,
+        py: Python<'_>,
+        max_error: Option<f64>,
+        roads: Option<Vec<String>>,
+        lanes: Option<Vec<String>>,
+        max_memory: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<opencrg::mesh::Mesh> {
+        let budget = crate::errors::budget(max_memory)?;
+        let options = opencrg_odr::MeshOptions { roads, lane_types: lanes, max_error };
+        let surface = self.surface.clone();
+        py.detach(|| opencrg_odr::map_mesh(&surface, &options, &budget)).map_err(to_py)
     }
 }
 

@@ -433,7 +433,7 @@ pub(crate) fn _road_from_recipe(py: Python<'_>, state: &Bound<'_, PyAny>) -> PyR
 }
 
 /// Rows of `K` values as a numpy array of shape (rows, K).
-fn matrix<'py, T: numpy::Element + Copy, const K: usize>(
+pub(crate) fn matrix<'py, T: numpy::Element + Copy, const K: usize>(
     py: Python<'py>,
     rows: &[[T; K]],
 ) -> PyResult<Bound<'py, numpy::PyArray2<T>>> {

@@ -72,3 +72,47 @@ def test_crg_records_and_friction(tmp_path):
     (tmp_path / "bad.xodr").write_text(MAP.replace('length="60"', 'length="sixty"'))
     with pytest.raises(opencrg.FormatError, match="bad.xodr:3"):
         opencrg.odr.Map(tmp_path / "bad.xodr")
+
+
+DEMO_MAP = pathlib.Path(__file__).resolve().parents[3] / "examples" / "data" / "demo_map.xodr"
+
+
+def test_the_mesh_lies_on_the_ground_and_is_written():
+    m = opencrg.odr.Map(DEMO_MAP)
+    mesh = m.to_mesh(max_error=0.005)
+    p, tri = mesh["positions"], mesh["triangles"]
+    assert p.shape[1] == 3 and tri.shape[1] == 3 and tri.dtype == np.uint32 and tri.max() < len(p)
+    for name in ("friction", "road", "lane", "s", "t"):
+        assert mesh[name].shape == (len(p),)
+    # Each vertex on the ground odr's probes give at its x/y where the point finds the
+    # vertex's own road and lane (at the joint of the two roads it may find the other
+    # road; on a border between lanes, the outer lane, and the sidewalks stand 12 cm high).
+    g = m.ground(p[:, 0], p[:, 1])
+    own = (g["road"] == mesh["road"].astype(np.int64)) & (g["lane"] == mesh["lane"].astype(np.int64))
+    assert own.mean() > 0.5
+    assert np.nanmax(np.abs(g["z"][own] - p[own, 2])) < 1e-6
+    # One group per lane of each road's section, none of type "none".
+    assert len(mesh["groups"]) == 8
+    assert {g["type"] for g in mesh["groups"]} == {"driving", "sidewalk"}
+    assert sum(g["triangles"][1] - g["triangles"][0] for g in mesh["groups"]) == len(tri)
+    # Friction per vertex from the lanes' materials: 0.9 on the first road, 0.7 on the other.
+    driving = mesh["lane"] == 1
+    assert {round(float(f), 3) for f in mesh["friction"][driving]} == {0.9, 0.7}
+    only = m.to_mesh(max_error=0.005, roads=["2"], lanes=["driving"])
+    assert set(only["road"]) == {1.0} and set(only["lane"]) == {-1.0, 1.0}
+
+
+def test_the_mesh_is_written_and_refusals_raise(tmp_path):
+    m = opencrg.odr.Map(DEMO_MAP)
+    out = tmp_path / "map.glb"
+    m.write_mesh(out, max_error=0.005)
+    assert out.read_bytes()[:4] == b"glTF"
+    with pytest.raises(opencrg.RequestError, match="no road 'x'"):
+        m.to_mesh(roads=["x"])
+    with pytest.raises(opencrg.RequestError):
+        m.to_mesh(max_error=-1.0)
+    with pytest.raises(opencrg.RequestError):
+        m.to_mesh(max_memory=1000)
+    with pytest.raises(opencrg.RequestError):
+        m.write_mesh(tmp_path / "map.xyz")
+    assert not (tmp_path / "map.xyz").exists()

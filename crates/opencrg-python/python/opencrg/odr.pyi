@@ -33,6 +33,17 @@ class Map:
     def normal(self, x: float, y: float) -> tuple[float, float, float]: ...
     @overload
     def normal(self, x: _ArrayLike, y: _ArrayLike) -> tuple[_Floats, _Floats, _Floats]: ...
+    def to_mesh(
+        self, max_error: float | None = None, roads: list[str] | None = None, lanes: list[str] | None = None,
+        *, max_memory: int | str | None = None
+    ) -> dict[str, object]:
+        """The drivable surface as numpy arrays: positions, normals, texcoords, triangles, per vertex
+        friction, road, lane, s, t; groups (one dict per lane of a lane section)."""
+    def write_mesh(
+        self, path: _Path, max_error: float | None = None, roads: list[str] | None = None,
+        lanes: list[str] | None = None, *, max_memory: int | str | None = None
+    ) -> None:
+        """Writes the mesh of to_mesh as .glb, .obj, .ply or .stl."""
     @overload
     def st_to_xyz(self, road: str, s: float, t: float) -> tuple[float, float, float]: ...
     @overload
