@@ -10,9 +10,10 @@
 //! grid's increments; elsewhere rows are halved until the surface between them lies
 //! within the bound of the chord (columns too where a lateral shape bends the section).
 //! With a bound given, the rows and columns of CRG pieces are then thinned: a piece
-//! starts from its corners, and a row or column is put back (for all lanes of the
-//! piece, so that no crack opens) wherever a sample of the full resolution lies farther
-//! than the bound from the mesh's triangles.
+//! starts from its corners, and wherever a sample of the full resolution lies farther
+//! than the bound from the mesh's triangles, the quad holding it is halved: by a row
+//! (for all lanes of the piece, so that no crack opens) where the surface bends along
+//! s, by a column where it bends across, by both where it only twists.
 //!
 //! The mesh carries, per vertex, `friction` (-1 where none is known), `road` (the
 //! road's index in the map), `lane` (its id), `s` and `t`; one group of triangles per
@@ -387,11 +388,43 @@ impl Builder<'_> {
                             })
                         });
                         if far {
-                            if r1 - r0 >= 2 && !keep_rows[(r0 + r1) / 2] {
+                            // Which way the surface bends: samples off the straight line
+                            // between the quad's sides along s (at its first, middle and
+                            // last column) call for a row; across (at its rows), for a column.
+                            let off_along = |m: usize| {
+                                (r0..=r1).map(move |j| {
+                                    let w = (j - r0) as f64 / (r1 - r0) as f64;
+                                    distance(at(j, m), lerp(at(r0, m), at(r1, m), w))
+                                })
+                            };
+                            let off_across = |j: usize| {
+                                (c0..=c1).map(move |m| {
+                                    let w = (m - c0) as f64 / (c1 - c0).max(1) as f64;
+                                    distance(at(j, m), lerp(at(j, c0), at(j, c1), w))
+                                })
+                            };
+                            let worst =
+                                |it: &mut dyn Iterator<Item = f64>| it.filter(|e| e.is_finite()).fold(0.0, f64::max);
+                            let along =
+                                [c0, (c0 + c1) / 2, c1].iter().map(|&m| worst(&mut off_along(m))).fold(0.0, f64::max);
+                            let across =
+                                [r0, (r0 + r1) / 2, r1].iter().map(|&j| worst(&mut off_across(j))).fold(0.0, f64::max);
+                            let (mut row, mut col) = (along > 0.5 * bound, across > 0.5 * bound);
+                            if !row && !col {
+                                (row, col) = (true, true);
+                            }
+                            // A way that cannot be halved any more passes to the other.
+                            if row && r1 - r0 < 2 {
+                                col = true;
+                            }
+                            if col && c1 - c0 < 2 {
+                                row = true;
+                            }
+                            if row && r1 - r0 >= 2 && !keep_rows[(r0 + r1) / 2] {
                                 keep_rows[(r0 + r1) / 2] = true;
                                 changed = true;
                             }
-                            if c1 - c0 >= 2 && !keep_cols[l][(c0 + c1) / 2] {
+                            if col && c1 - c0 >= 2 && !keep_cols[l][(c0 + c1) / 2] {
                                 keep_cols[l][(c0 + c1) / 2] = true;
                                 changed = true;
                             }
