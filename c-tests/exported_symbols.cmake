@@ -1,7 +1,7 @@
 # Compares the functions the shared library exports (nm -D --defined-only) with the
-# functions its headers declare (crgBaseLib.h, crgOdr.h); fails on any difference either
-# way, and on any name that does not start with crg.
-# usage: cmake -DLIBRARY=libopencrg.so "-DHEADERS=crgBaseLib.h;crgOdr.h" -P exported_symbols.cmake
+# functions its headers declare (crgBaseLib.h, crgBaseLibPrivate.h, crgOdr.h); fails on
+# any difference either way, and on any name that does not start with crg.
+# usage: cmake -DLIBRARY=libopencrg.so "-DHEADERS=crgBaseLib.h;crgBaseLibPrivate.h;crgOdr.h" -P exported_symbols.cmake
 execute_process(COMMAND nm -D --defined-only "${LIBRARY}" OUTPUT_VARIABLE nm_out RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
     message(FATAL_ERROR "nm failed on ${LIBRARY}")

@@ -16,6 +16,10 @@
 #define CRG_CHECK_FORMAT_STRING(FORMAT_IDX, VARARG_IDX)
 #endif
 
+#ifdef __cplusplus
+extern "C" {
+#endif /* __cplusplus */
+
 
 /*
  Message level: no messages.
@@ -351,10 +355,6 @@
  Data format for `crgDataSetWrite`: KDBI (binary, 8-byte doubles).
  */
 #define dCrgFormatKDBI 4
-
-#ifdef __cplusplus
-extern "C" {
-#endif // __cplusplus
 
 /*
  Reads a CRG file; returns the data set id (> 0) or 0.
@@ -884,15 +884,10 @@ int crgDataSetGetGlobalOrigin(int dataSetId, double *x, double *y, double *z, do
  */
 int crgDataSetSetGlobalOrigin(int dataSetId, double x, double y, double z, double phi);
 
-#ifdef __cplusplus
-}  // extern "C"
-#endif  // __cplusplus
-
 #endif  /* _CRG_BASELIB_H */
 
-#ifdef __cplusplus
-extern "C" {
-#endif
+#ifndef _CRG_BASELIB_H_TRAILER
+#define _CRG_BASELIB_H_TRAILER
 
 /**
  * Prints a message of the given level (printf-style), or hands it to the callback
@@ -901,5 +896,7 @@ extern "C" {
 void crgMsgPrint(int level, const char *format, ...) CRG_CHECK_FORMAT_STRING(2, 3);
 
 #ifdef __cplusplus
-}
-#endif
+}  /* extern "C" */
+#endif /* __cplusplus */
+
+#endif /* _CRG_BASELIB_H_TRAILER */

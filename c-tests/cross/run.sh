@@ -89,7 +89,7 @@ arm)
 esac
 
 # The exported functions are exactly the header's.
-declared=$(grep -hoE '^[A-Za-z_][A-Za-z_0-9 ]*[ *]+crg[A-Za-z_0-9]*\(' include/crgBaseLib.h include/crgOdr.h | grep -oE 'crg[A-Za-z_0-9]*\($' |
+declared=$(grep -hoE '^[A-Za-z_][A-Za-z_0-9 ]*[ *]+crg[A-Za-z_0-9]*\(' include/crgBaseLib.h include/crgBaseLibPrivate.h include/crgOdr.h | grep -oE 'crg[A-Za-z_0-9]*\($' |
     tr -d '(' | sort -u)
 if [ "$exported" != "$declared" ]; then
     diff <(echo "$exported") <(echo "$declared") >&2 || true

@@ -4,8 +4,8 @@
 //!   library, so programs linked in the build tree find it at run time;
 //! - Windows: the import library for MSVC's linker, `opencrg.lib` (rustc writes
 //!   `libopencrg.dll.a` for MinGW itself), and the module-definition file `opencrg.def`,
-//!   both of exactly the functions `crgBaseLib.h` and `crgOdr.h` declare, made from the
-//!   headers and written beside the DLL.
+//!   both of exactly the functions `crgBaseLib.h`, `crgBaseLibPrivate.h` and `crgOdr.h`
+//!   declare, made from the headers and written beside the DLL.
 use std::path::{Path, PathBuf};
 
 fn main() {
@@ -37,7 +37,7 @@ fn linux(profile_dir: Option<PathBuf>) {
 
 fn windows(manifest: &Path, profile_dir: Option<PathBuf>) {
     let mut text = String::new();
-    for name in ["crgBaseLib.h", "crgOdr.h"] {
+    for name in ["crgBaseLib.h", "crgBaseLibPrivate.h", "crgOdr.h"] {
         let header = manifest.join("../../include").join(name);
         println!("cargo:rerun-if-changed={}", header.display());
         text += &std::fs::read_to_string(&header).unwrap_or_else(|e| panic!("{}: {e}", header.display()));
@@ -46,7 +46,7 @@ fn windows(manifest: &Path, profile_dir: Option<PathBuf>) {
     names.sort_unstable();
     names.dedup();
     assert!(names.len() > 50, "only {} function declarations found in the headers", names.len());
-    let mut def = String::from("; The functions of crgBaseLib.h and crgOdr.h, made from the headers by crates/opencrg-capi/build.rs.\nLIBRARY opencrg.dll\nEXPORTS\n");
+    let mut def = String::from("; The functions of crgBaseLib.h, crgBaseLibPrivate.h and crgOdr.h, made from the headers by crates/opencrg-capi/build.rs.\nLIBRARY opencrg.dll\nEXPORTS\n");
     for name in &names {
         def.push_str("    ");
         def.push_str(name);

@@ -18,6 +18,7 @@ mod odr;
 mod on_load;
 mod owner;
 mod panic;
+mod perf_stat;
 mod profile;
 mod ptr;
 mod registry;

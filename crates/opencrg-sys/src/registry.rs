@@ -19,7 +19,44 @@ pub struct DataSet {
 static DATASETS: Mutex<Vec<DataSet>> = Mutex::new(Vec::new());
 
 /// The contact points, by id, with the data set each was made from.
-static CPS: Slots<ContactPoint> = Slots::new();
+static CPS: Slots<CpEntry> = Slots::new();
+
+/// A contact point and its performance statistics.
+struct CpEntry {
+    cp: ContactPoint,
+    stats: PerfStat,
+}
+
+/// The calls on one contact point and the time they took, counted while active
+/// (`crgContactPointActivatePerfStat`).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct PerfStat {
+    /// Whether calls are counted.
+    pub active: bool,
+    /// The calls counted.
+    pub calls: u64,
+    /// Their time, in nanoseconds.
+    pub nanos: u64,
+    /// The longest of them, in nanoseconds.
+    pub longest: u64,
+}
+
+impl CpEntry {
+    /// Runs `f` on the contact point, counted when the statistics are active.
+    #[inline(always)]
+    fn run<R>(&mut self, f: impl FnOnce(&mut ContactPoint) -> R) -> R {
+        if !self.stats.active {
+            return f(&mut self.cp);
+        }
+        let start = std::time::Instant::now();
+        let r = f(&mut self.cp);
+        let took = u64::try_from(start.elapsed().as_nanos()).unwrap_or(u64::MAX);
+        self.stats.calls += 1;
+        self.stats.nanos = self.stats.nanos.saturating_add(took);
+        self.stats.longest = self.stats.longest.max(took);
+        r
+    }
+}
 
 /// Adds a road; returns its id (one more than the largest id in use).
 pub fn add_dataset(road: Road) -> c_int {
@@ -72,13 +109,22 @@ pub fn dataset_ids() -> Vec<c_int> {
 /// one), or -1.
 pub fn create_cp(dataset: c_int) -> c_int {
     let Some(road) = with_dataset(dataset, |d| d.road.clone()) else { return -1 };
-    CPS.create(dataset, ContactPoint::new(road))
+    CPS.create(dataset, CpEntry { cp: ContactPoint::new(road), stats: PerfStat::default() })
 }
 
 /// Runs `f` on a contact point; `None` for an unknown id.
 #[inline]
 pub fn with_cp<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R) -> Option<R> {
-    CPS.with_mut(id, f)
+    CPS.with_mut(id, |e| e.run(f))
+}
+
+/// Changes the performance statistics of a contact point (`f` on them) and gives them;
+/// `None` for an unknown id.
+pub fn perf_stat(id: c_int, f: impl FnOnce(&mut PerfStat)) -> Option<PerfStat> {
+    CPS.with_mut(id, |e| {
+        f(&mut e.stats);
+        e.stats
+    })
 }
 
 /// Runs `f` on a contact point when this thread owns it; `None` (without running
@@ -86,7 +132,7 @@ pub fn with_cp<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R) -> Option<R
 /// call. `f` must not panic (this runs outside any panic guard).
 #[inline(always)]
 pub fn with_owned_cp_mut<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R) -> Option<R> {
-    CPS.with_owned_mut(id, f)
+    CPS.with_owned_mut(id, |e| e.run(f))
 }
 
 /// Deletes one contact point.
@@ -95,8 +141,8 @@ pub fn delete_cp(id: c_int) -> bool {
 }
 
 /// Runs `f` on every contact point of a data set (`None`: of every data set).
-fn for_each_cp_of(dataset: Option<c_int>, f: impl FnMut(&mut ContactPoint)) {
-    CPS.for_each_of(dataset, f);
+fn for_each_cp_of(dataset: Option<c_int>, mut f: impl FnMut(&mut ContactPoint)) {
+    CPS.for_each_of(dataset, |e| f(&mut e.cp));
 }
 
 /// Deletes the contact points of one data set, or all of them (and empties the table).

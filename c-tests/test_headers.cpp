@@ -1,0 +1,2 @@
+/* test_headers.c as C++. */
+#include "test_headers.c"

@@ -1,0 +1,48 @@
+//! Performance statistics of contact points, declared in `crgBaseLibPrivate.h` as the
+//! reference library's private header does: while active, every call on a contact point
+//! is counted with the time it took; printed through the message channel at NOTICE level.
+#![allow(non_snake_case)] // the C API's parameter names
+
+use crate::panic::guard;
+use crate::{msg, registry};
+use std::ffi::c_int;
+
+/// Changes a contact point's statistics, warning about an unknown id.
+fn change(call: &str, cpId: c_int, f: impl FnOnce(&mut registry::PerfStat)) -> Option<registry::PerfStat> {
+    let found = registry::perf_stat(cpId, f);
+    if found.is_none() {
+        msg::warn(&format!("{call}: no contact point with id {cpId}"));
+    }
+    found
+}
+
+/// Starts counting the calls on a contact point and their time, from zero.
+#[no_mangle]
+pub extern "C" fn crgContactPointActivatePerfStat(cpId: c_int) {
+    guard("crgContactPointActivatePerfStat", (), || {
+        let start = registry::PerfStat { active: true, ..Default::default() };
+        change("crgContactPointActivatePerfStat", cpId, |s| *s = start);
+    })
+}
+
+/// Stops counting the calls on a contact point (what was counted is kept for printing).
+#[no_mangle]
+pub extern "C" fn crgContactPointDeActivatePerfStat(cpId: c_int) {
+    guard("crgContactPointDeActivatePerfStat", (), || {
+        change("crgContactPointDeActivatePerfStat", cpId, |s| s.active = false);
+    })
+}
+
+/// Prints what was counted on a contact point: calls, their total, mean and longest time.
+#[no_mangle]
+pub extern "C" fn crgContactPointPrintPerfStat(cpId: c_int) {
+    guard("crgContactPointPrintPerfStat", (), || {
+        let Some(s) = change("crgContactPointPrintPerfStat", cpId, |_| {}) else { return };
+        let mean = if s.calls > 0 { s.nanos as f64 / s.calls as f64 } else { 0.0 };
+        let state = if s.active { "counting" } else { "not counting" };
+        msg::send(msg::NOTICE, &format!("performance statistics of contact point {cpId} ({state})"));
+        msg::send(msg::NOTICE, &format!("    calls counted:  {}", s.calls));
+        msg::send(msg::NOTICE, &format!("    time in all:    {:.6} s", s.nanos as f64 * 1e-9));
+        msg::send(msg::NOTICE, &format!("    time per call:  {mean:.1} ns (longest {} ns)", s.longest));
+    })
+}
