@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs every test: formatting, lints and documentation, the Rust tests (unit,
-# integration, header freshness, the opencrg command, doctests incl. the README's), a
-# short run of every fuzz target, the OpenDRIVE geometry against libOpenDRIVE and its CRG
+# integration, header freshness, the opencrg command, doctests incl. the README's), the
+# crates as published (the rust-version's toolchain, `cargo package`), a short run of
+# every fuzz target, the OpenDRIVE geometry against libOpenDRIVE and its CRG
 # records against the reference C library, then
 # through CTest the C tests (also under the sanitizers and valgrind), the header and
 # symbol checks, the CMake consumer project, the conformance suite in both behaviour
@@ -17,6 +18,18 @@ cargo fmt --all --check
 cargo clippy --workspace --all-targets -- -D warnings
 RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps
 cargo test --workspace
+# Ready to publish: the workspace's crates depended on at the workspace's version; the
+# rust-version true (the workspace checks with that toolchain, installed by rustup); every
+# publishable crate packaged and built from its .crate alone, in dependency order.
+version=$(sed -n 's/^version = "\(.*\)"/\1/p' Cargo.toml | head -1)
+if grep -E '^opencrg[-a-z]* = .*version = ' Cargo.toml | grep -v "version = \"$version\""; then
+    echo "the workspace's crates must be depended on at version $version" >&2
+    exit 1
+fi
+msrv=$(sed -n 's/^rust-version = "\(.*\)"/\1/p' Cargo.toml)
+rustup toolchain install "$msrv" --profile minimal >/dev/null 2>&1
+cargo "+$msrv" check -q --workspace --all-targets --locked --target-dir target/msrv
+cargo package -q --locked --allow-dirty -p opencrg-core -p opencrg-odr -p opencrg-sys -p opencrg-cli
 # Every fuzz target for 15 s from its seeds (stable toolchain, under 4 GB of address space).
 fuzz/run.sh 15
 # OpenDRIVE geometry: every road of ../shared/opendrive against libOpenDRIVE, built

@@ -6,7 +6,7 @@
 build_programs() {
     local source=$1 prefix=$2
     cargo build --release -q -p opencrg-capi
-    cargo run --release -q -p opencrg --example make_bench_roads -- "$roads" >/dev/null
+    cargo run --release -q -p opencrg-core --example make_bench_roads -- "$roads" >/dev/null
     cc -O2 -Iinclude "$source" target/release/libopencrg.a -lm -lpthread -ldl -o "$out/${prefix}_opencrg"
     libs=(opencrg)
     if [ $# -ge 4 ]; then

@@ -18,7 +18,7 @@ points=${POINTS:-2000000}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 cargo build --release -q -p opencrg-cli
-[ -f "$road" ] || cargo run --release -q -p opencrg --example make_bench_roads -- "$roads" >/dev/null
+[ -f "$road" ] || cargo run --release -q -p opencrg-core --example make_bench_roads -- "$roads" >/dev/null
 crg=target/release/opencrg
 echo "processor: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//'), $(nproc) threads"
 echo "road: $road ($($crg info --json "$road" | python3 -c 'import json,sys; j=json.load(sys.stdin); print(j["cross_sections"], "x", j["long_sections"], "nodes")'))"

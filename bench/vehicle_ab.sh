@@ -13,7 +13,7 @@ cd "$(dirname "$0")/.."
 [ $# -ge 1 ] || { echo "usage: bench/vehicle_ab.sh BASELINE.so [OTHER.so ...]" >&2; exit 2; }
 roads=target/bench-roads
 cargo build --release -q -p opencrg-capi
-cargo run --release -q -p opencrg --example make_bench_roads -- "$roads" >/dev/null
+cargo run --release -q -p opencrg-core --example make_bench_roads -- "$roads" >/dev/null
 cc -O2 -Wall -Wextra -Iinclude bench/vehicle_ab.c -ldl -lm -o target/vehicle_ab
 grep -m1 'model name' /proc/cpuinfo | sed 's/.*: /cpu /'
 libs=()

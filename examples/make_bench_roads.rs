@@ -4,7 +4,7 @@
 //! with heading, slope and banking channels (KRBI, 1 cm along, 5 cm across, about
 //! 65 MB of grid; curve radii down to about 125 m).
 //!
-//!     cargo run --release -p opencrg --example make_bench_roads -- target/bench-roads
+//!     cargo run --release -p opencrg-core --example make_bench_roads -- target/bench-roads
 
 use opencrg::synth::RoadSpec;
 use opencrg::DataFormat;

@@ -1,7 +1,7 @@
 //! Generates the demo road shipped in examples/data/demo_road.crg: 120 m of a
 //! gently curved, banked and sloped road, 6 m wide, with a bumpy surface.
 //!
-//!     cargo run -p opencrg --example make_demo_road -- examples/data/demo_road.crg
+//!     cargo run -p opencrg-core --example make_demo_road -- examples/data/demo_road.crg
 
 use opencrg::synth::RoadSpec;
 

@@ -1,6 +1,6 @@
 //! Loads a road, evaluates it along a path and converts x/y back to u/v.
 //!
-//!     cargo run -p opencrg --example rust_evaluate -- examples/data/demo_road.crg
+//!     cargo run -p opencrg-core --example rust_evaluate -- examples/data/demo_road.crg
 
 use opencrg::{ContactPoint, Road};
 use std::sync::Arc;
