@@ -11,7 +11,8 @@
 # import library) and on 64-bit Arm Linux (under qemu); the .glb export against the Khronos
 # glTF validator, the 3D view in headless Chromium; last the Python package: its
 # manylinux2014 wheel built with maturin and zig, installed into a fresh virtual
-# environment without cargo, and its pytest suite (pickling, multiprocessing, Dask).
+# environment without cargo, and its pytest suite (pickling, multiprocessing, Dask); the
+# same suite on the package installed from its source distribution.
 set -euo pipefail
 cd "$(dirname "$0")"
 cargo fmt --all --check
@@ -111,3 +112,13 @@ env PATH="$no_cargo" sh -c '! command -v cargo >/dev/null'
 env PATH="$no_cargo" target/python-venv/bin/pip install -q --upgrade pip
 env PATH="$no_cargo" target/python-venv/bin/pip install -q numpy pytest "dask[distributed]" pyproj "$wheel"
 env PATH="$no_cargo" OPENCRG_CLI="$PWD/target/release/opencrg" target/python-venv/bin/python -m pytest -q -p no:logging crates/opencrg-python/tests
+# The source distribution as PyPI would serve it: installed into a fresh environment that
+# has cargo (a development build, to keep the run short), and tested there.
+rm -f target/sdist/opencrg-*.tar.gz
+target/python-build/bin/maturin sdist -m crates/opencrg-python/Cargo.toml --out target/sdist >/dev/null
+rm -rf target/python-sdist-venv
+python3 -m venv target/python-sdist-venv
+target/python-sdist-venv/bin/pip install -q --upgrade pip
+target/python-sdist-venv/bin/pip install -q numpy pytest "dask[distributed]" pyproj
+target/python-sdist-venv/bin/pip install -q --config-settings=build-args="--profile=dev" target/sdist/opencrg-*.tar.gz
+OPENCRG_CLI="$PWD/target/release/opencrg" target/python-sdist-venv/bin/python -m pytest -q -p no:logging crates/opencrg-python/tests
