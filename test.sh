@@ -15,10 +15,14 @@
 # same suite on the package installed from its source distribution.
 set -euo pipefail
 cd "$(dirname "$0")"
+# Each group's time, for the test run's budget (30 minutes on 2 cores, .ci/run included).
+step() { echo "test.sh: $SECONDS s: $1"; }
 cargo fmt --all --check
 cargo clippy --workspace --all-targets -- -D warnings
 RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps
+step "Rust tests"
 cargo test --workspace
+step "publishing checks"
 # Ready to publish: the workspace's crates depended on at the workspace's version; the
 # rust-version true (the workspace checks with that toolchain, installed by rustup); every
 # publishable crate packaged and built from its .crate alone, in dependency order.
@@ -31,8 +35,10 @@ msrv=$(sed -n 's/^rust-version = "\(.*\)"/\1/p' Cargo.toml)
 rustup toolchain install "$msrv" --profile minimal >/dev/null 2>&1
 cargo "+$msrv" check -q --workspace --all-targets --locked --target-dir target/msrv
 cargo package -q --locked --allow-dirty -p opencrg-core -p opencrg-odr -p opencrg-sys -p opencrg-cli
+step "fuzzing"
 # Every fuzz target for 15 s from its seeds (stable toolchain, under 4 GB of address space).
 fuzz/run.sh 15
+step "OpenDRIVE oracles"
 # OpenDRIVE geometry: every road of ../shared/opendrive against libOpenDRIVE, built
 # outside the project by ../shared/oracles/build-libopendrive.sh.
 ../shared/oracles/build-libopendrive.sh "$PWD/target/libopendrive" >/dev/null
@@ -47,12 +53,14 @@ cc -O2 -I target/crgref/up crates/opencrg-odr/tests/oracle/crg_reference_answers
     -lm -Wl,-rpath,"$PWD/target/crgref/up" -o target/crgref/answers
 OPENCRG_CRG_REFERENCE="$PWD/target/crgref/answers" \
     cargo test --release -p opencrg-odr --test crg_reference -- --include-ignored --nocapture
+step "C tests"
 cargo build --release -p opencrg-capi -p opencrg-cli
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"
 ctest --test-dir build --output-on-failure -j"$(nproc)"
 c-tests/cross/run.sh windows
 c-tests/cross/run.sh arm
+step "glTF and views"
 # The .glb export of the demo road (curved, sloped, banked), whole, a part and simplified,
 # and of the demo map (the demo road laid on a road of an OpenDRIVE map), against the
 # Khronos glTF validator, from the npm registry.
@@ -96,6 +104,7 @@ for shot in --screenshot="$PWD/target/demo_map_view.png" --dump-dom; do
 done
 python3 crates/opencrg-cli/tests/check_view.py target/demo_map_view.png
 python3 crates/opencrg-cli/tests/check_odr_view.py target/demo_map_view.dom examples/data/demo_map.xodr target/release/opencrg
+step "Python wheel"
 # The Python wheel as users get it: manylinux2014 (glibc 2.17), abi3, linked by zig.
 python3 -m venv target/python-build
 target/python-build/bin/pip install -q --upgrade pip
@@ -112,6 +121,7 @@ env PATH="$no_cargo" sh -c '! command -v cargo >/dev/null'
 env PATH="$no_cargo" target/python-venv/bin/pip install -q --upgrade pip
 env PATH="$no_cargo" target/python-venv/bin/pip install -q numpy pytest "dask[distributed]" pyproj "$wheel"
 env PATH="$no_cargo" OPENCRG_CLI="$PWD/target/release/opencrg" target/python-venv/bin/python -m pytest -q -p no:logging crates/opencrg-python/tests
+step "Python sdist"
 # The source distribution as PyPI would serve it: installed into a fresh environment that
 # has cargo (a development build, to keep the run short), and tested there.
 rm -f target/sdist/opencrg-*.tar.gz
@@ -122,3 +132,4 @@ target/python-sdist-venv/bin/pip install -q --upgrade pip
 target/python-sdist-venv/bin/pip install -q numpy pytest "dask[distributed]" pyproj
 target/python-sdist-venv/bin/pip install -q --config-settings=build-args="--profile=dev" target/sdist/opencrg-*.tar.gz
 OPENCRG_CLI="$PWD/target/release/opencrg" target/python-sdist-venv/bin/python -m pytest -q -p no:logging crates/opencrg-python/tests
+step "done"
