@@ -8,7 +8,8 @@
 # symbol checks, the CMake consumer project, the conformance suite in both behaviour
 # profiles (.so and .a) and the differential tester; the same C tests and conformance
 # suite on Windows (MinGW-w64 build under wine, with the zip's CMake package and MSVC
-# import library) and on 64-bit Arm Linux (under qemu); the .glb export against the Khronos
+# import library) and from the Linux archives (glibc 2.17, zig; the aarch64 one under
+# qemu), with CMake and pkg-config consumers; the .glb export against the Khronos
 # glTF validator, the 3D view in headless Chromium; last the Python package: its
 # manylinux2014 wheel built with maturin and zig, installed into a fresh virtual
 # environment without cargo, and its pytest suite (pickling, multiprocessing, Dask); the
@@ -60,6 +61,7 @@ cmake --build build -j"$(nproc)"
 ctest --test-dir build --output-on-failure -j"$(nproc)"
 c-tests/cross/run.sh windows
 c-tests/cross/run.sh arm
+c-tests/cross/run.sh linux
 step "glTF and views"
 # The .glb export of the demo road (curved, sloped, banked), whole, a part and simplified,
 # and of the demo map (the demo road laid on a road of an OpenDRIVE map), against the

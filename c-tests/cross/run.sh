@@ -3,7 +3,8 @@
 # tests with the platform's C compiler, run under its emulator.
 #
 #   c-tests/cross/run.sh windows   # x86_64-pc-windows-gnu, MinGW-w64, wine; the zip
-#   c-tests/cross/run.sh arm       # aarch64-unknown-linux-gnu, Debian's cross gcc, qemu
+#   c-tests/cross/run.sh arm       # the linux-aarch64 archive, Debian's cross gcc, qemu
+#   c-tests/cross/run.sh linux     # the linux-x86_64 archive (glibc 2.17), natively
 #
 # Checks: the exported functions against the header; the C tests (API with the shared
 # and the static library, threads, extensions, private header, compatibility profile,
@@ -14,7 +15,7 @@ set -euo pipefail
 # Nothing here reads its input; an emulated program that would waits for nothing.
 exec </dev/null
 root=$(cd "$(dirname "$0")/../.." && pwd)
-platform=${1:?usage: run.sh windows|arm}
+platform=${1:?usage: run.sh windows|arm|linux}
 cd "$root"
 road="$root/examples/data/demo_road.crg"
 version=$(sed -n 's/^version = "\([0-9.]*\)"$/\1/p' Cargo.toml | head -1)
@@ -67,23 +68,31 @@ windows)
     exported=$(x86_64-w64-mingw32-objdump -p "$shared" | sed -n '/\[Ordinal\/Name Pointer\] Table/,/^$/p' |
         sed -n 's/^\s*\[ *[0-9]*\] \([A-Za-z_0-9]*\)$/\1/p' | sort -u)
     ;;
-arm)
-    need aarch64-linux-gnu-gcc aarch64-linux-gnu-nm qemu-aarch64
-    target=aarch64-unknown-linux-gnu
-    cargo build --release --target "$target" -p opencrg-capi -p opencrg-cli
-    built="$root/target/$target/release"
-    cc=aarch64-linux-gnu-gcc
-    run=(timeout 600 qemu-aarch64 -L /usr/aarch64-linux-gnu)
-    shared="$built/libopencrg.so"
-    link_shared=("$shared" "-Wl,-rpath,$built")
-    link_static=("$built/libopencrg.a" -lpthread -ldl)
+arm | linux)
+    # The Linux archive (packaging/linux-archive.sh: zig, glibc 2.17) as users unpack it.
+    if [ "$platform" = arm ]; then
+        need aarch64-linux-gnu-gcc aarch64-linux-gnu-nm aarch64-linux-gnu-objdump qemu-aarch64 cmake pkg-config
+        arch=aarch64 cc=aarch64-linux-gnu-gcc nm=aarch64-linux-gnu-nm
+        run=(timeout 600 qemu-aarch64 -L /usr/aarch64-linux-gnu)
+        cmake_cross=(-DCMAKE_SYSTEM_NAME=Linux -DCMAKE_SYSTEM_PROCESSOR=aarch64 -DCMAKE_C_COMPILER=$cc)
+    else
+        need cc nm objdump cmake pkg-config
+        arch=x86_64 cc=cc nm=nm
+        run=(timeout 600)
+        cmake_cross=()
+    fi
+    packaging/linux-archive.sh "$arch" | sed "s/^/cross $platform: /"
+    tree="$root/target/dist/opencrg-$version-linux-$arch"
+    shared="$tree/lib/libopencrg.so.$version"
+    link_shared=(-L"$tree/lib" -lopencrg "-Wl,-rpath,$tree/lib")
+    link_static=("$tree/lib/libopencrg.a" -lpthread -ldl)
     link_threads=(-lpthread)
     exe=
-    tool=("${run[@]}" "$built/opencrg")
-    exported=$(aarch64-linux-gnu-nm -D --defined-only "$shared" | awk '{print $3}' | sort -u)
+    tool=("${run[@]}" "$tree/bin/opencrg")
+    exported=$("$nm" -D --defined-only "$shared" | awk '{print $3}' | sort -u)
     ;;
 *)
-    echo "usage: run.sh windows|arm" >&2
+    echo "usage: run.sh windows|arm|linux" >&2
     exit 2
     ;;
 esac
@@ -126,31 +135,54 @@ runner=$(IFS=';'; echo "${run[*]}")
 cmake -DRUNNER="$runner" -DPROGRAM="$work/test_stdout_clean$exe" -DROAD="$road" -P c-tests/stdout_clean.cmake
 ok "messages on stderr, the program's output alone on stdout"
 
-# The conformance suite in both profiles.
+# The conformance suite in both profiles: on Windows its client built by the suite's
+# script against the DLL; from a Linux archive the client built as users build theirs,
+# by a CMake project with find_package(OpenCRG) and with the flags pkg-config gives
+# (the suite's script then runs that client: prebuilt-client.sh stands in for its compiler).
 conformance="$root/../shared/conformance/run.sh"
 [ -f "$conformance" ] || { echo "cross $platform: $conformance not found" >&2; exit 1; }
+clients=(library)
+if [ "$platform" != windows ]; then
+    oracle="$root/../shared/conformance/oracle.c"
+    cmake -S c-tests/consumer -B "$work/consumer" "${cmake_cross[@]}" -DCMAKE_PREFIX_PATH="$tree" \
+        -DCMAKE_BUILD_TYPE=Release -DORACLE_SOURCE="$oracle" >/dev/null
+    cmake --build "$work/consumer" >/dev/null
+    for kind in shared static; do
+        (cd "$work/consumer" && "${run[@]}" "./consumer_$kind" "$road") | grep -q '^consumer: z' || exit 1
+    done
+    ok "find_package(OpenCRG) from the archive: OpenCRG::OpenCRG and OpenCRG::OpenCRG_static build and run"
+    read -ra pkg_flags <<<"$(PKG_CONFIG_PATH="$tree/lib/pkgconfig" pkg-config --cflags --libs opencrg)"
+    "$cc" -O2 -Wall "$oracle" "${pkg_flags[@]}" -lm "-Wl,-rpath,$tree/lib" -o "$work/oracle_pkgconfig"
+    clients=("$work/consumer/conformance_client" "$work/oracle_pkgconfig")
+fi
 # Under an emulator a client now and then dies without answering (seen under wine: no
 # output, exit status 1, once in some dozen runs of 464 clients). A profile whose only
 # failures are such runs is run once more, saying so; different answers fail at once.
 conformance_run() {
-    rm -rf "$work/conformance-$1"
-    CC=$cc CONFORMANCE_RUNNER="${run[*]}" CONFORMANCE_PROFILE=$1 \
-        sh "$conformance" include "$shared" "$work/conformance-$1" >"$work/conformance-$1.log" 2>&1 || true
-    grep -q '^232 passed, 0 failed$' "$work/conformance-$1.log"
+    local out="$work/conformance-$1-$2" compiler=$cc
+    [ "$3" = library ] || compiler="$root/c-tests/cross/prebuilt-client.sh"
+    rm -rf "$out"
+    CC=$compiler PREBUILT_CLIENT=$3 CONFORMANCE_RUNNER="${run[*]}" CONFORMANCE_PROFILE=$1 \
+        sh "$conformance" include "$shared" "$out" >"$out.log" 2>&1 || true
+    grep -q '^232 passed, 0 failed$' "$out.log"
 }
-for profile in current 2.0.1; do
-    if ! conformance_run $profile; then
-        died=$(grep -l 'the client exited with status' "$work/conformance-$profile"/*.err 2>/dev/null | wc -l)
-        failed=$(grep -c '^FAIL ' "$work/conformance-$profile.log" || true)
-        if [ "$died" -eq 0 ] || [ "$died" -ne "$failed" ]; then
-            tail -20 "$work/conformance-$profile.log"
-            exit 1
+for client in "${clients[@]}"; do
+    how=$(basename "$client")
+    for profile in current 2.0.1; do
+        out="$work/conformance-$profile-$how"
+        if ! conformance_run $profile "$how" "$client"; then
+            died=$(grep -l 'the client exited with status' "$out"/*.err 2>/dev/null | wc -l)
+            failed=$(grep -c '^FAIL ' "$out.log" || true)
+            if [ "$died" -eq 0 ] || [ "$died" -ne "$failed" ]; then
+                tail -20 "$out.log"
+                exit 1
+            fi
+            echo "cross $platform: $died client(s) of the $profile profile died under the emulator without answering:" \
+                "$(grep -h 'the client exited' "$out"/*.err | head -3 | tr '\n' ' ')- running the profile again"
+            conformance_run $profile "$how" "$client" || { tail -20 "$out.log"; exit 1; }
         fi
-        echo "cross $platform: $died client(s) of the $profile profile died under the emulator without answering:" \
-            "$(grep -h 'the client exited' "$work/conformance-$profile"/*.err | head -3 | tr '\n' ' ')- running the profile again"
-        conformance_run $profile || { tail -20 "$work/conformance-$profile.log"; exit 1; }
-    fi
-    ok "conformance ($profile profile): $(tail -1 "$work/conformance-$profile.log")"
+        ok "conformance ($profile profile, client: $how): $(tail -1 "$out.log")"
+    done
 done
 
 # The command.
