@@ -121,7 +121,7 @@ python3 -m venv target/python-venv
 no_cargo=$(printf '%s' "$PATH" | tr ':' '\n' | grep -v -e cargo -e rustup | paste -sd: -)
 env PATH="$no_cargo" sh -c '! command -v cargo >/dev/null'
 env PATH="$no_cargo" target/python-venv/bin/pip install -q --upgrade pip
-env PATH="$no_cargo" target/python-venv/bin/pip install -q numpy pytest "dask[distributed]" pyproj "$wheel"
+env PATH="$no_cargo" target/python-venv/bin/pip install -q numpy pytest "dask[distributed]" pyproj matplotlib "$wheel"
 env PATH="$no_cargo" OPENCRG_CLI="$PWD/target/release/opencrg" target/python-venv/bin/python -m pytest -q -p no:logging crates/opencrg-python/tests
 step "Python sdist"
 # The source distribution as PyPI would serve it: installed into a fresh environment that
@@ -131,7 +131,7 @@ target/python-build/bin/maturin sdist -m crates/opencrg-python/Cargo.toml --out 
 rm -rf target/python-sdist-venv
 python3 -m venv target/python-sdist-venv
 target/python-sdist-venv/bin/pip install -q --upgrade pip
-target/python-sdist-venv/bin/pip install -q numpy pytest "dask[distributed]" pyproj
+target/python-sdist-venv/bin/pip install -q numpy pytest "dask[distributed]" pyproj matplotlib
 target/python-sdist-venv/bin/pip install -q --config-settings=build-args="--profile=dev" target/sdist/opencrg-*.tar.gz
 OPENCRG_CLI="$PWD/target/release/opencrg" target/python-sdist-venv/bin/python -m pytest -q -p no:logging crates/opencrg-python/tests
 step "done"

@@ -34,7 +34,7 @@ done
 cp -rn /usr/aarch64-linux-gnu/lib/. "$work/root/lib/aarch64-linux-gnu/"
 ln -sf aarch64-linux-gnu/ld-linux-aarch64.so.1 "$work/root/lib/ld-linux-aarch64.so.1"
 python3 -m pip install -q --target "$work/site" --platform manylinux2014_aarch64 --python-version 3.11 \
-    --implementation cp --only-binary=:all: numpy pytest "dask[distributed]" pyproj "$wheel"
+    --implementation cp --only-binary=:all: numpy pytest "dask[distributed]" pyproj matplotlib "$wheel"
 root=$(realpath "$work/root")
 run=(qemu-aarch64 -L "$root" -E "LD_LIBRARY_PATH=$root/lib/aarch64-linux-gnu:$root/usr/lib/aarch64-linux-gnu"
     -E "PYTHONPATH=$(realpath "$work/site")" -E "OPENCRG_CLI=$PWD/target/release/opencrg" "$root/usr/bin/python3.11")

@@ -25,13 +25,13 @@
 //! Bad input gives one line on stderr and exit status 2; a road that fails its checks
 //! gives exit status 1 from `check`.
 
-mod canvas;
 mod export;
 mod expr;
 mod geojson;
 mod info;
 mod make;
 mod odr;
+mod plot;
 mod render;
 mod roughness;
 mod view;
@@ -411,15 +411,16 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
                     render::MAX_SIZE
                 ));
             }
+            let name = road.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
             let picture = match section {
-                Some(s) => render::profile(&mut cp, s),
+                Some(s) => render::profile(&mut cp, &name, s).map_err(|e| format!("{}: {e}", road.display()))?,
                 None => {
                     let bar = indicatif::ProgressBar::new(0);
                     bar.set_style(
                         indicatif::ProgressStyle::with_template("rendering {bar:40} {pos}/{len} rows")
                             .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
                     );
-                    let picture = render::top_view(&mut cp, size, &budget, &|row| {
+                    let picture = render::top_view(&mut cp, &name, size, &budget, &|row| {
                         bar.set_length(bar.length().unwrap_or(0).max(row));
                         bar.set_position(row);
                     });
@@ -427,7 +428,7 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
                     picture.map_err(|e| format!("{}: {e}", road.display()))?
                 }
             };
-            picture.write_png(&output)?;
+            picture.write(&output)?;
         }
         Command::Export { road, output, ranges, normal_map, max_error, options } => {
             let (u, v) = ranges.parse()?;
@@ -474,7 +475,8 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
                 print!("{}", roughness::text(&found, &road.display().to_string(), segment));
             }
             if let Some(out) = plot {
-                roughness::plot(&found).write_png(&out)?;
+                let name = road.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+                roughness::plot(&found, &name, segment).and_then(|figure| figure.write(&out))?;
             }
         }
         Command::Make(command) => return make::run(command, &budget),

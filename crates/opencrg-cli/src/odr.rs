@@ -238,7 +238,9 @@ fn render(path: &Path, output: &Path, size: usize, budget: &Budget) -> Result<()
         bar.inc(1);
     }
     bar.finish_and_clear();
-    crate::render::height_picture(&z, mw, mh, px).write_png(output)?;
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let raster = crate::render::Raster { z: &z, width: mw, height: mh, px, west: x0, north: y1 };
+    crate::render::height_picture(&raster, &format!("{name}: elevation"))?.write(output)?;
     eprintln!("{}: {mw} x {mh} px, {px:.3} m a pixel", output.display());
     Ok(())
 }

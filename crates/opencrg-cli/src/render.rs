@@ -1,18 +1,20 @@
-//! Pictures of a road: a top view in x/y coloured by elevation with hill shading, a
-//! colour bar and a scale bar; and sections along u or across v as line plots.
+//! Pictures of a road: a top view in x/y coloured by elevation with hill shading, axes,
+//! a colour bar and a scale bar; and sections along u or across v as line plots.
 
-use crate::canvas::{Canvas, Rgb, BLACK, NO_DATA};
+use crate::plot::{self, font, tick, Area, Figure, Image, AXIS, LABEL, TITLE};
 use opencrg::{Budget, ContactPoint};
+use plotters::prelude::*;
 
-/// Room right of the map for the colour bar and its labels, and below it for the scale bar.
-const BAR_ROOM: usize = 150;
-const SCALE_ROOM: usize = 44;
-const MARGIN: usize = 12;
 /// The memory a pixel of the top view takes while it is made (elevation, slope, colour,
-/// the encoded picture).
-pub(crate) const PIXEL_BYTES: f64 = 32.0;
+/// the figure's pixels, the encoded picture or SVG).
+pub(crate) const PIXEL_BYTES: f64 = 48.0;
 /// The longest side of a top view, in pixels.
 pub const MAX_SIZE: usize = 20_000;
+
+/// The grey of cells without data.
+const NO_DATA: Rgb = [190, 190, 190];
+
+type Rgb = [u8; 3];
 
 /// A few colours from deep blue through green to yellow, for low to high elevation.
 const COLOUR_STOPS: [Rgb; 6] =
@@ -31,32 +33,15 @@ fn shade(c: Rgb, light: f64) -> Rgb {
     c.map(|v| (f64::from(v) * light).round().clamp(0.0, 255.0) as u8)
 }
 
-/// A length of 1, 2 or 5 times a power of ten, at most `max`.
-fn nice_length(max: f64) -> f64 {
-    let p = 10f64.powf(max.log10().floor());
-    [5.0, 2.0, 1.0].into_iter().map(|k| k * p).find(|&l| l <= max).unwrap_or(p)
-}
-
-/// A number for a label, with as many decimals as a range of `span` needs.
-fn label_in(v: f64, span: f64) -> String {
-    let decimals = if span > 0.0 { (2.0 - span.log10().floor()).clamp(0.0, 8.0) as usize } else { 4 };
-    let text = format!("{v:.decimals$}");
-    // No "-0.000".
-    if text.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') {
-        text.trim_start_matches('-').to_string()
-    } else {
-        text
-    }
-}
-
-/// A number for a label on its own.
-fn label(v: f64) -> String {
-    label_in(v, v.abs().max(1e-9) * 10.0)
-}
-
 /// The top view of the road evaluated through `cp`: at most `size` pixels on the longer
 /// side of the map. `progress` is told each finished row.
-pub fn top_view(cp: &mut ContactPoint, size: usize, budget: &Budget, progress: &dyn Fn(u64)) -> Result<Canvas, String> {
+pub fn top_view(
+    cp: &mut ContactPoint,
+    name: &str,
+    size: usize,
+    budget: &Budget,
+    progress: &dyn Fn(u64),
+) -> Result<Figure, String> {
     let road = cp.road().clone();
     let (u0, u1) = road.u_range();
     let (v0, v1) = road.v_range();
@@ -119,76 +104,175 @@ pub fn top_view(cp: &mut ContactPoint, size: usize, budget: &Budget, progress: &
             }
         }
     }
-    Ok(height_picture(&z, mw, mh, px))
+    height_picture(&Raster { z: &z, width: mw, height: mh, px, west: xmin, north: ymax }, &format!("{name}: elevation"))
 }
 
-/// The picture of heights `z` on a raster of `mw` x `mh` pixels of `px` metres each (row
-/// by row from the north; `None` off the surface, NaN where it has no height): coloured
-/// by height with hill shading, a colour bar in metres and a scale bar.
-pub(crate) fn height_picture(z: &[Option<f64>], mw: usize, mh: usize, px: f64) -> Canvas {
+/// Heights on a raster: row by row from the north, `None` off the surface, NaN where it
+/// has no height.
+pub(crate) struct Raster<'a> {
+    /// The heights, `width` x `height`.
+    pub z: &'a [Option<f64>],
+    /// Columns.
+    pub width: usize,
+    /// Rows.
+    pub height: usize,
+    /// Metres a pixel.
+    pub px: f64,
+    /// x of the raster's western edge, m.
+    pub west: f64,
+    /// y of the raster's northern edge, m.
+    pub north: f64,
+}
+
+/// Room around the map of a top view: title above, tick labels and axis titles left
+/// and below, the scale bar below them, the colour bar right.
+const TOP: u32 = 44;
+const LEFT: u32 = 84;
+const BELOW: u32 = 52;
+const SCALE_BAR: u32 = 48;
+const COLOUR_BAR: u32 = 170;
+
+/// The pixels of the raster: coloured by height with hill shading towards a light in
+/// the north-west (scaled by the slopes' 98th percentile, so the relief shows at any
+/// scale), grey without data, transparent off the surface. Also the height range.
+fn shaded(r: &Raster) -> (Vec<u8>, Option<(f64, f64)>) {
+    let (mw, mh, z) = (r.width, r.height, r.z);
     let finite = || z.iter().flatten().copied().filter(|v| v.is_finite());
     let (zmin, zmax) = finite().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)));
+    let range = zmin.is_finite().then_some((zmin, zmax));
     let zspan = if zmax > zmin { zmax - zmin } else { 1.0 };
-
-    // Hill shading: the slope towards a light in the north-west, scaled by its 98th
-    // percentile so the relief shows whatever the road's scale.
     let at = |r: usize, c: usize| z[r * mw + c].filter(|v| v.is_finite());
-    let mut slopes: Vec<f64> = Vec::new();
-    let slope_at = |r: usize, c: usize| -> Option<f64> {
-        let here = at(r, c)?;
-        let east = if c + 1 < mw { at(r, c + 1) } else { None }.unwrap_or(here);
-        let west = if c > 0 { at(r, c - 1) } else { None }.unwrap_or(here);
-        let north = if r > 0 { at(r - 1, c) } else { None }.unwrap_or(here);
-        let south = if r + 1 < mh { at(r + 1, c) } else { None }.unwrap_or(here);
-        // Rising towards the north-west faces the light.
-        Some(((west - east) + (north - south)) / (2.0 * px))
+    let slope_at = |row: usize, c: usize| -> Option<f64> {
+        let here = at(row, c)?;
+        let east = if c + 1 < mw { at(row, c + 1) } else { None }.unwrap_or(here);
+        let west = if c > 0 { at(row, c - 1) } else { None }.unwrap_or(here);
+        let north = if row > 0 { at(row - 1, c) } else { None }.unwrap_or(here);
+        let south = if row + 1 < mh { at(row + 1, c) } else { None }.unwrap_or(here);
+        Some(((west - east) + (north - south)) / (2.0 * r.px))
     };
-    for r in 0..mh {
-        for c in 0..mw {
-            if let Some(s) = slope_at(r, c) {
-                slopes.push(s.abs());
-            }
-        }
-    }
+    let mut slopes: Vec<f64> =
+        (0..mh).flat_map(|row| (0..mw).filter_map(move |c| slope_at(row, c))).map(f64::abs).collect();
     slopes.sort_by(f64::total_cmp);
     let relief = slopes.get(slopes.len() * 98 / 100).copied().filter(|s| *s > 0.0).unwrap_or(1.0);
-
-    let width = MARGIN + mw + BAR_ROOM;
-    let height = MARGIN + mh.max(140) + SCALE_ROOM;
-    let mut canvas = Canvas::new(width, height);
-    for r in 0..mh {
+    let mut rgba = vec![0u8; mw * mh * 4];
+    for row in 0..mh {
         for c in 0..mw {
-            let colour = match z[r * mw + c] {
+            let colour = match z[row * mw + c] {
                 None => continue,
                 Some(v) if !v.is_finite() => NO_DATA,
                 Some(v) => {
-                    let light = 0.75 + 0.25 * (slope_at(r, c).unwrap_or(0.0) / relief).clamp(-1.0, 1.0);
+                    let light = 0.75 + 0.25 * (slope_at(row, c).unwrap_or(0.0) / relief).clamp(-1.0, 1.0);
                     shade(colour((v - zmin) / zspan), light)
                 }
             };
-            canvas.set((MARGIN + c) as i64, (MARGIN + r) as i64, colour);
+            let k = (row * mw + c) * 4;
+            rgba[k..k + 4].copy_from_slice(&[colour[0], colour[1], colour[2], 255]);
         }
     }
+    (rgba, range)
+}
 
-    // Colour bar with the elevation range in metres.
-    let (bx, by, bh) = ((MARGIN + mw + 16) as i64, MARGIN as i64, 120i64);
-    for k in 0..bh {
-        canvas.fill(bx, by + k, 16, 1, colour(1.0 - k as f64 / (bh - 1) as f64));
-    }
-    for (value, y) in [(zmax, by), (0.5 * (zmin + zmax), by + bh / 2 - 4), (zmin, by + bh - 7)] {
-        canvas.text(bx + 22, y, &format!("{} m", label_in(value, zspan)), 1, BLACK);
-    }
-    canvas.text(bx, by + bh + 8, "z", 1, BLACK);
+/// The top view of heights on a raster: the map in x and y with ticks, a colour bar
+/// with ticks in metres, a scale bar, cells without data marked.
+pub(crate) fn height_picture(r: &Raster, title: &str) -> Result<Figure, String> {
+    let (mw, mh) = (r.width as u32, r.height as u32);
+    let (rgba, range) = shaded(r);
+    let no_data = r.z.iter().flatten().any(|v| !v.is_finite());
+    let map_height = mh.max(240);
+    let (width, height) = (LEFT + mw + COLOUR_BAR, TOP + map_height + BELOW + SCALE_BAR);
+    let image = Image { x: LEFT, y: TOP, width: mw, height: mh, rgba };
+    Figure::draw(width, height, Some(image), |root| {
+        root.draw_text(title, &font(TITLE), (LEFT as i32, 14)).map_err(plot::failed)?;
+        let (x0, x1) = (r.west, r.west + mw as f64 * r.px);
+        let (y0, y1) = (r.north - mh as f64 * r.px, r.north);
+        let area = root.clone().shrink((0, TOP), (LEFT + mw, mh + BELOW));
+        let mut chart = ChartBuilder::on(&area)
+            .x_label_area_size(BELOW)
+            .y_label_area_size(LEFT)
+            .build_cartesian_2d(x0..x1, y0..y1)
+            .map_err(plot::failed)?;
+        chart
+            .configure_mesh()
+            .disable_mesh()
+            .x_labels((mw as usize / 90).max(4))
+            .y_labels((mh as usize / 50).max(4))
+            .x_label_formatter(&|v| tick(*v))
+            .y_label_formatter(&|v| tick(*v))
+            .x_desc("x [m]")
+            .y_desc("y [m]")
+            .label_style(font(LABEL))
+            .axis_desc_style(font(AXIS))
+            .draw()
+            .map_err(plot::failed)?;
+        chart
+            .plotting_area()
+            .draw(&Rectangle::new([(x0, y0), (x1, y1)], BLACK.stroke_width(1)))
+            .map_err(plot::failed)?;
+        scale_bar(root, mw as f64 * r.px / 3.0, r.px, TOP + mh + BELOW + 12)?;
+        let bar_height = map_height.min(360);
+        colour_bar(root, (LEFT + mw + 24, TOP), bar_height, range, no_data)
+    })
+}
 
-    // Scale bar: a round length of at most a third of the map.
-    let length = nice_length(mw as f64 * px / 3.0);
-    let bar = (length / px).round() as i64;
-    let (sx, sy) = (MARGIN as i64, (MARGIN + mh.max(140) + 16) as i64);
-    canvas.fill(sx, sy, bar.max(1), 4, BLACK);
-    canvas.fill(sx, sy - 4, 1, 12, BLACK);
-    canvas.fill(sx + bar.max(1) - 1, sy - 4, 1, 12, BLACK);
-    canvas.text(sx, sy + 10, &format!("{length} m"), 1, BLACK);
-    canvas
+/// A bar `length` metres long (rounded down to 1, 2 or 5 times a power of ten) at the
+/// height `y` of the figure, left-aligned with the map.
+fn scale_bar(root: &Area, longest: f64, px: f64, y: u32) -> Result<(), String> {
+    let length = plot::round_length(longest);
+    let bar = ((length / px).round() as i32).max(1);
+    let (x, y) = (LEFT as i32, y as i32);
+    root.draw(&Rectangle::new([(x, y), (x + bar, y + 5)], BLACK.filled())).map_err(plot::failed)?;
+    for end in [x, x + bar] {
+        root.draw(&PathElement::new(vec![(end, y - 4), (end, y + 9)], BLACK.stroke_width(1))).map_err(plot::failed)?;
+    }
+    root.draw_text(&format!("{} m", tick(length)), &font(LABEL), (x + bar + 8, y - 4)).map_err(plot::failed)
+}
+
+/// The colour bar: the colours from low to high with ticks in metres and a title, and
+/// the grey of cells without data when there are some.
+fn colour_bar(
+    root: &Area,
+    at: (u32, u32),
+    height: u32,
+    range: Option<(f64, f64)>,
+    no_data: bool,
+) -> Result<(), String> {
+    let area = root.clone().shrink(at, (110, height + 40));
+    let (zmin, zmax) = range.unwrap_or((0.0, 1.0));
+    let (lo, hi) = if zmax > zmin { (zmin, zmax) } else { (zmin - 0.5e-3, zmin + 0.5e-3) };
+    let mut chart = ChartBuilder::on(&area)
+        .margin_top(6)
+        .margin_bottom(6)
+        .right_y_label_area_size(72)
+        .build_cartesian_2d(0.0..1.0, lo..hi)
+        .map_err(plot::failed)?;
+    let steps = 128;
+    chart
+        .draw_series((0..steps).map(|k| {
+            let (a, b) = (k as f64 / steps as f64, (k + 1) as f64 / steps as f64);
+            let [red, green, blue] = colour(a + 0.5 / steps as f64);
+            Rectangle::new([(0.0, lo + a * (hi - lo)), (1.0, lo + b * (hi - lo))], RGBColor(red, green, blue).filled())
+        }))
+        .map_err(plot::failed)?;
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .disable_x_axis()
+        .y_labels(((height / 40) as usize).max(4))
+        .y_label_formatter(&|v| tick(*v))
+        .y_desc("z [m]")
+        .label_style(font(LABEL))
+        .axis_desc_style(font(AXIS))
+        .draw()
+        .map_err(plot::failed)?;
+    chart.plotting_area().draw(&Rectangle::new([(0.0, lo), (1.0, hi)], BLACK.stroke_width(1))).map_err(plot::failed)?;
+    if no_data {
+        let (x, y) = (at.0 as i32, (at.1 + height + 24) as i32);
+        let [red, green, blue] = NO_DATA;
+        root.draw(&Rectangle::new([(x, y), (x + 16, y + 12)], RGBColor(red, green, blue).filled()))
+            .map_err(plot::failed)?;
+        root.draw_text("no data", &font(LABEL), (x + 22, y)).map_err(plot::failed)?;
+    }
+    Ok(())
 }
 
 /// Which section a profile shows.
@@ -200,14 +284,15 @@ pub enum Section {
     AtV(f64),
 }
 
-/// A line plot of the elevation along a section.
-pub fn profile(cp: &mut ContactPoint, section: Section) -> Canvas {
+/// The elevation along a section, with ticks at 1-2-5 steps on both axes, a grid and a
+/// title naming the file and the section; gaps where the road has no elevation.
+pub fn profile(cp: &mut ContactPoint, name: &str, section: Section) -> Result<Figure, String> {
     let road = cp.road().clone();
     let (u0, u1) = road.u_range();
     let (v0, v1) = road.v_range();
-    let (from, to, name) = match section {
-        Section::AtU(_) => (v0, v1, "v"),
-        Section::AtV(_) => (u0, u1, "u"),
+    let (from, to, along) = match section {
+        Section::AtU(_) => (v0, v1, "v [m]"),
+        Section::AtV(_) => (u0, u1, "u [m]"),
     };
     let samples = 1000;
     let points: Vec<(f64, f64)> = (0..=samples)
@@ -228,37 +313,42 @@ pub fn profile(cp: &mut ContactPoint, section: Section) -> Canvas {
     let (zmin, zmax) = if zmin.is_finite() { (zmin, zmax) } else { (0.0, 1.0) };
     let pad = if zmax > zmin { 0.05 * (zmax - zmin) } else { 0.5e-3 };
     let (zlo, zhi) = (zmin - pad, zmax + pad);
-
-    let (w, h) = (900usize, 360usize);
-    let (left, right, top, bottom) = (96i64, 24i64, 28i64, 48i64);
-    let mut canvas = Canvas::new(w, h);
-    let (pw, ph) = (w as i64 - left - right, h as i64 - top - bottom);
-    let to_px = |s: f64, z: f64| {
-        (left as f64 + (s - from) / (to - from) * pw as f64, top as f64 + (zhi - z) / (zhi - zlo) * ph as f64)
-    };
-    canvas.fill(left, top, pw, ph, [248, 248, 248]);
-    for (a, b) in [((left, top), (left + pw, top)), ((left, top + ph), (left + pw, top + ph))] {
-        canvas.line(a.0 as f64, a.1 as f64, b.0 as f64, b.1 as f64, BLACK);
-    }
-    canvas.line(left as f64, top as f64, left as f64, (top + ph) as f64, BLACK);
-    canvas.line((left + pw) as f64, top as f64, (left + pw) as f64, (top + ph) as f64, BLACK);
-    for pair in points.windows(2) {
-        let ((s0, z0), (s1, z1)) = (pair[0], pair[1]);
-        if z0.is_finite() && z1.is_finite() {
-            let (a, b) = (to_px(s0, z0), to_px(s1, z1));
-            canvas.line(a.0, a.1, b.0, b.1, [30, 90, 200]);
-        }
-    }
     let title = match section {
-        Section::AtU(u) => format!("z across the road at u = {} m", label(u)),
-        Section::AtV(v) => format!("z along the road at v = {} m", label(v)),
+        Section::AtU(u) => format!("{name}: elevation across the road at u = {} m", tick(u)),
+        Section::AtV(v) => format!("{name}: elevation along the road at v = {} m", tick(v)),
     };
-    canvas.text(left, 8, &title, 1, BLACK);
-    canvas.text(4, top, &format!("{} m", label_in(zhi, zhi - zlo)), 1, BLACK);
-    canvas.text(4, top + ph - 7, &format!("{} m", label_in(zlo, zhi - zlo)), 1, BLACK);
-    canvas.text(left, top + ph + 8, &format!("{} m", label_in(from, to - from)), 1, BLACK);
-    let end = format!("{} m", label_in(to, to - from));
-    canvas.text(left + pw - Canvas::text_width(&end, 1), top + ph + 8, &end, 1, BLACK);
-    canvas.text(left + pw / 2 - 3, top + ph + 24, name, 2, BLACK);
-    canvas
+    Figure::draw(900, 440, None, |root| {
+        root.draw_text(&title, &font(TITLE), (LEFT as i32, 14)).map_err(plot::failed)?;
+        let mut chart = ChartBuilder::on(root)
+            .margin_top(TOP)
+            .margin_right(28)
+            .margin_bottom(8)
+            .x_label_area_size(BELOW)
+            .y_label_area_size(LEFT)
+            .build_cartesian_2d(from..to, zlo..zhi)
+            .map_err(plot::failed)?;
+        chart
+            .configure_mesh()
+            .x_labels(10)
+            .y_labels(8)
+            .x_label_formatter(&|v| tick(*v))
+            .y_label_formatter(&|v| tick(*v))
+            .x_desc(along)
+            .y_desc("z [m]")
+            .label_style(font(LABEL))
+            .axis_desc_style(font(AXIS))
+            .bold_line_style(RGBColor(210, 210, 210))
+            .light_line_style(RGBColor(238, 238, 238))
+            .draw()
+            .map_err(plot::failed)?;
+        let line = RGBColor(30, 90, 200).stroke_width(2);
+        for run in points.split(|p| !p.1.is_finite()).filter(|run| run.len() > 1) {
+            chart.draw_series(LineSeries::new(run.iter().copied(), line)).map_err(plot::failed)?;
+        }
+        chart
+            .plotting_area()
+            .draw(&Rectangle::new([(from, zlo), (to, zhi)], BLACK.stroke_width(1)))
+            .map_err(plot::failed)?;
+        Ok(())
+    })
 }

@@ -1,10 +1,12 @@
 //! `opencrg roughness`: the IRI and the ISO 8608 class of a road's wheel tracks, as a
-//! table, as JSON, and as a picture (the densities on log-log axes among the class
+//! table, as JSON, and as a figure (the densities on log-log axes among the class
 //! bands, the IRI segment by segment along u).
 
-use crate::canvas::{Canvas, Rgb, BLACK};
+use crate::plot::{self, font, tick, Figure, AXIS, LABEL, TITLE};
 use opencrg::psd::{CLASSES, CLASS_LIMITS, N0};
 use opencrg::roughness::Track;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde_json::{json, Value};
 
 /// A number with `digits` decimals, or "-" for none.
@@ -71,104 +73,174 @@ pub fn json(tracks: &[Track], segment: f64) -> Value {
     json!({ "segment_m": segment, "tracks": tracks })
 }
 
-const COLOURS: [Rgb; 6] = [[30, 90, 200], [200, 60, 40], [40, 150, 60], [150, 60, 170], [220, 140, 20], [0, 0, 0]];
-const GREY: Rgb = [170, 170, 170];
+/// The tracks' colours, in turn.
+const COLOURS: [RGBColor; 6] = [
+    RGBColor(30, 90, 200),
+    RGBColor(200, 60, 40),
+    RGBColor(40, 150, 60),
+    RGBColor(150, 60, 170),
+    RGBColor(220, 140, 20),
+    RGBColor(0, 0, 0),
+];
+const CLASS_LINE: RGBColor = RGBColor(150, 150, 150);
+/// The spatial frequencies the density panel shows, cycles/m (a hair wider than three
+/// decades, so that rounding keeps both ends' labels).
+const N_RANGE: (f64, f64) = (0.01 * (1.0 - 1e-9), 10.0 * (1.0 + 1e-9));
+/// The densities the panel shows at least (m³): every class band has room for its letter.
+const GD_RANGE: (f64, f64) = (1e-9, 1e-1);
+const LEFT: u32 = 92;
 
-/// A panel's frame and its pixel area: (left, top, width, height).
-fn frame(canvas: &mut Canvas, left: i64, top: i64, w: i64, h: i64) {
-    canvas.fill(left, top, w, h, [248, 248, 248]);
-    let (l, t, r, b) = (left as f64, top as f64, (left + w) as f64, (top + h) as f64);
-    for (x0, y0, x1, y1) in [(l, t, r, t), (l, b, r, b), (l, t, l, b), (r, t, r, b)] {
-        canvas.line(x0, y0, x1, y1, BLACK);
+/// log10 of the class band's middle at n0: between its limits, half a band below A's
+/// upper limit and above G's.
+fn class_middle(k: usize) -> f64 {
+    let half = 4f64.log10() / 2.0;
+    match k {
+        0 => CLASS_LIMITS[0].log10() - half,
+        k if k == CLASS_LIMITS.len() => CLASS_LIMITS[k - 1].log10() + half,
+        k => (CLASS_LIMITS[k - 1].log10() + CLASS_LIMITS[k].log10()) / 2.0,
     }
 }
 
-/// The picture: densities and class bands above, IRI along u below.
-pub fn plot(tracks: &[Track]) -> Canvas {
-    let (w, h) = (900usize, 760usize);
-    let mut canvas = Canvas::new(w, h);
-    let (left, pw) = (96i64, w as i64 - 96 - 24);
-    // The density panel: log10 n across, log10 Gd up.
-    let (top, ph) = (28i64, 380i64);
-    frame(&mut canvas, left, top, pw, ph);
-    let (n_lo, n_hi) = (-2.0f64, 1.0f64);
-    let bands = tracks.iter().flat_map(|t| t.psd.bands.iter().map(|b| b.1.log10()));
-    let (g_min, g_max) = bands.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), g| (a.min(g), b.max(g)));
-    let (g_lo, g_hi) = if g_min.is_finite() { (g_min.floor() - 1.0, g_max.ceil() + 1.0) } else { (-10.0, -2.0) };
-    let px = |n: f64, g: f64| {
-        (left as f64 + (n - n_lo) / (n_hi - n_lo) * pw as f64, top as f64 + (g_hi - g) / (g_hi - g_lo) * ph as f64)
-    };
-    let inside = |p: (f64, f64)| p.1 >= top as f64 && p.1 <= (top + ph) as f64;
-    // Class limits: Gd(n) = limit · (n / n0)^-2, with the letters between them at n0.
-    for (k, limit) in CLASS_LIMITS.iter().enumerate() {
-        let line = |n: f64| px(n, limit.log10() - 2.0 * (n - N0.log10()));
-        let steps = 60;
-        for s in 0..steps {
-            let (a, b) =
-                (n_lo + (n_hi - n_lo) * s as f64 / steps as f64, n_lo + (n_hi - n_lo) * (s + 1) as f64 / steps as f64);
-            let (p, q) = (line(a), line(b));
-            if inside(p) && inside(q) {
-                canvas.line(p.0, p.1, q.0, q.1, GREY);
-            }
-        }
-        let mid = if k == 0 { limit.log10() - 0.3 } else { (limit.log10() + CLASS_LIMITS[k - 1].log10()) / 2.0 };
-        let p = px(N0.log10(), mid);
-        if inside(p) {
-            canvas.text(p.0 as i64 - 2, p.1 as i64 - 3, &CLASSES[k].to_string(), 1, GREY);
-        }
-    }
-    for (t, colour) in tracks.iter().zip(COLOURS.iter().cycle()) {
-        let points: Vec<(f64, f64)> =
-            t.psd.bands.iter().filter(|b| b.1 > 0.0).map(|b| px(b.0.log10(), b.1.log10())).collect();
-        for pair in points.windows(2) {
-            canvas.line(pair[0].0, pair[0].1, pair[1].0, pair[1].1, *colour);
-        }
-        for p in &points {
-            canvas.fill(p.0 as i64 - 2, p.1 as i64 - 2, 5, 5, *colour);
-        }
-    }
-    canvas.text(left, 8, "displacement PSD Gd(n) [m^3] and the ISO 8608 classes", 1, BLACK);
-    for (n, label) in [(-2.0, "0.01"), (-1.0, "0.1"), (0.0, "1"), (1.0, "10")] {
-        let p = px(n, g_lo);
-        canvas.text(p.0 as i64 - 8, top + ph + 6, label, 1, BLACK);
-    }
-    canvas.text(left + pw / 2 - 60, top + ph + 20, "n [cycles/m]", 1, BLACK);
-    canvas.text(4, top, &format!("1e{}", g_hi as i64), 1, BLACK);
-    canvas.text(4, top + ph - 7, &format!("1e{}", g_lo as i64), 1, BLACK);
+/// The line Gd(n) = Gd(n0) (n / n0)^-2 through log10 Gd(n0) = `at_n0`, cut to the panel.
+fn class_line(at_n0: f64, (g_lo, g_hi): (f64, f64)) -> Option<[(f64, f64); 2]> {
+    let n_at = |g: f64| 10f64.powf(N0.log10() + (at_n0 - g.log10()) / 2.0);
+    let a = n_at(g_hi).max(N_RANGE.0);
+    let b = n_at(g_lo).min(N_RANGE.1);
+    let gd = |n: f64| 10f64.powf(at_n0 - 2.0 * (n.log10() - N0.log10()));
+    (a < b).then(|| [(a, gd(a)), (b, gd(b))])
+}
 
-    // The IRI panel: u across, IRI up, one step line per track.
-    let (top2, ph2) = (top + ph + 64, 220i64);
-    frame(&mut canvas, left, top2, pw, ph2);
-    let segments = tracks.iter().flat_map(|t| t.segments.iter());
-    let (u0, u1, i_max) = segments.fold((f64::INFINITY, f64::NEG_INFINITY, 0.0f64), |(a, b, m), s| {
-        (a.min(s.u_start), b.max(s.u_end), m.max(s.iri.unwrap_or(0.0)))
-    });
-    let i_hi = if i_max > 0.0 { i_max * 1.1 } else { 1.0 };
-    let span = if u1 > u0 { u1 - u0 } else { 1.0 };
-    let px2 =
-        |u: f64, iri: f64| (left as f64 + (u - u0) / span * pw as f64, top2 as f64 + (i_hi - iri) / i_hi * ph2 as f64);
-    for (t, colour) in tracks.iter().zip(COLOURS.iter().cycle()) {
-        for s in &t.segments {
-            if let Some(iri) = s.iri {
-                let (a, b) = (px2(s.u_start, iri), px2(s.u_end, iri));
-                canvas.line(a.0, a.1, b.0, b.1, *colour);
-                canvas.line(a.0, a.1 + 1.0, b.0, b.1 + 1.0, *colour);
+/// The figure: above, each track's displacement PSD on log-log axes among the ISO 8608
+/// class bands, their letters along the bands; below, the IRI per segment as steps
+/// along u. A legend names each track.
+pub fn plot(tracks: &[Track], name: &str, segment: f64) -> Result<Figure, String> {
+    let bands = tracks.iter().flat_map(|t| t.psd.bands.iter().map(|b| b.1)).filter(|g| *g > 0.0);
+    let (g_min, g_max) = bands.fold(GD_RANGE, |(a, b), g| (a.min(g), b.max(g)));
+    let g_range = (10f64.powf(g_min.log10().floor()) * (1.0 - 1e-9), 10f64.powf(g_max.log10().ceil()) * (1.0 + 1e-9));
+    Figure::draw(900, 860, None, |root| {
+        let (upper, lower) = root.split_vertically(520);
+        upper
+            .draw_text(&format!("{name}: displacement PSD and ISO 8608 classes"), &font(TITLE), (LEFT as i32, 14))
+            .map_err(plot::failed)?;
+        let mut psd = ChartBuilder::on(&upper)
+            .margin_top(44)
+            .margin_right(28)
+            .x_label_area_size(52)
+            .y_label_area_size(LEFT)
+            .build_cartesian_2d((N_RANGE.0..N_RANGE.1).log_scale(), (g_range.0..g_range.1).log_scale())
+            .map_err(plot::failed)?;
+        psd.configure_mesh()
+            .x_labels(8)
+            .y_labels(12)
+            .x_label_formatter(&|n| plot::decade(*n))
+            .y_label_formatter(&|g| plot::decade(*g))
+            .x_desc("n [cycles/m]")
+            .y_desc("Gd(n) [m³]")
+            .label_style(font(LABEL))
+            .axis_desc_style(font(AXIS))
+            .bold_line_style(RGBColor(205, 205, 205))
+            .light_line_style(RGBColor(238, 238, 238))
+            .draw()
+            .map_err(plot::failed)?;
+        let (g_lo, g_hi) = (g_range.0.log10(), g_range.1.log10());
+        for limit in CLASS_LIMITS {
+            if let Some(line) = class_line(limit.log10(), g_range) {
+                psd.draw_series(LineSeries::new(line, CLASS_LINE.stroke_width(1))).map_err(plot::failed)?;
             }
         }
-    }
-    canvas.text(left, top2 - 16, "IRI [m/km] per segment along u", 1, BLACK);
-    canvas.text(4, top2, &format!("{i_hi:.2}"), 1, BLACK);
-    canvas.text(4, top2 + ph2 - 7, "0", 1, BLACK);
-    canvas.text(left, top2 + ph2 + 6, &format!("{u0:.0} m"), 1, BLACK);
-    let end = format!("{u1:.0} m");
-    canvas.text(left + pw - Canvas::text_width(&end, 1), top2 + ph2 + 6, &end, 1, BLACK);
-    // The legend: one colour per track.
-    let mut x = left;
-    for (t, colour) in tracks.iter().zip(COLOURS.iter().cycle()) {
-        let label = format!("v = {} m", t.v);
-        canvas.fill(x, h as i64 - 18, 10, 7, *colour);
-        canvas.text(x + 14, h as i64 - 18, &label, 1, BLACK);
-        x += Canvas::text_width(&label, 1) + 40;
-    }
-    canvas
+        // Each letter on its band's middle line, at the first of these frequencies (the
+        // right half first, where the densities of roads tend to be low) where it lies
+        // well inside the panel.
+        for (k, letter) in CLASSES.iter().enumerate() {
+            let middle = class_middle(k);
+            let place = [2.0, 1.0, 5.0, 0.5, 0.2, 0.1, 0.05, 0.02].into_iter().find_map(|n: f64| {
+                let g = middle - 2.0 * (n.log10() - N0.log10());
+                (g > g_lo + 0.3 && g < g_hi - 0.3).then(|| (n, 10f64.powf(g)))
+            });
+            if let Some(at) = place {
+                psd.draw_series(std::iter::once(Text::new(
+                    letter.to_string(),
+                    at,
+                    font(AXIS).color(&CLASS_LINE).pos(Pos::new(HPos::Center, VPos::Center)),
+                )))
+                .map_err(plot::failed)?;
+            }
+        }
+        for (t, colour) in tracks.iter().zip(COLOURS.iter().cycle()) {
+            let points: Vec<(f64, f64)> = t.psd.bands.iter().filter(|b| b.1 > 0.0).copied().collect();
+            let style = colour.stroke_width(2);
+            psd.draw_series(LineSeries::new(points.iter().copied(), style))
+                .map_err(plot::failed)?
+                .label(format!("v = {} m (class {})", tick(t.v), t.psd.class))
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
+            psd.draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled()))).map_err(plot::failed)?;
+        }
+        psd.configure_series_labels()
+            .position(SeriesLabelPosition::UpperRight)
+            .background_style(WHITE.mix(0.9))
+            .border_style(RGBColor(160, 160, 160))
+            .label_font(font(LABEL))
+            .draw()
+            .map_err(plot::failed)?;
+
+        // The IRI per segment: steps along u.
+        let segments = tracks.iter().flat_map(|t| t.segments.iter());
+        let (u0, u1, i_max) = segments.fold((f64::INFINITY, f64::NEG_INFINITY, 0.0f64), |(a, b, m), s| {
+            (a.min(s.u_start), b.max(s.u_end), m.max(s.iri.unwrap_or(0.0)))
+        });
+        let (u0, u1) = if u1 > u0 { (u0, u1) } else { (0.0, 1.0) };
+        let i_hi = if i_max > 0.0 { i_max * 1.15 } else { 1.0 };
+        lower
+            .draw_text(&format!("IRI per {} m segment", tick(segment)), &font(TITLE), (LEFT as i32, 8))
+            .map_err(plot::failed)?;
+        let mut iri = ChartBuilder::on(&lower)
+            .margin_top(36)
+            .margin_right(28)
+            .margin_bottom(8)
+            .x_label_area_size(52)
+            .y_label_area_size(LEFT)
+            .build_cartesian_2d(u0..u1, 0.0..i_hi)
+            .map_err(plot::failed)?;
+        iri.configure_mesh()
+            .x_labels(10)
+            .y_labels(6)
+            .x_label_formatter(&|v| tick(*v))
+            .y_label_formatter(&|v| tick(*v))
+            .x_desc("u [m]")
+            .y_desc("IRI [m/km]")
+            .label_style(font(LABEL))
+            .axis_desc_style(font(AXIS))
+            .bold_line_style(RGBColor(205, 205, 205))
+            .light_line_style(RGBColor(238, 238, 238))
+            .draw()
+            .map_err(plot::failed)?;
+        for (t, colour) in tracks.iter().zip(COLOURS.iter().cycle()) {
+            let style = colour.stroke_width(2);
+            // Consecutive segments with an IRI join into one stepped line.
+            let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
+            for s in &t.segments {
+                match s.iri {
+                    Some(v) => runs.last_mut().map_or((), |run| run.extend([(s.u_start, v), (s.u_end, v)])),
+                    None => runs.push(Vec::new()),
+                }
+            }
+            let mut first = true;
+            for run in runs.into_iter().filter(|r| !r.is_empty()) {
+                let drawn = iri.draw_series(LineSeries::new(run, style)).map_err(plot::failed)?;
+                if std::mem::take(&mut first) {
+                    drawn
+                        .label(format!("v = {} m", tick(t.v)))
+                        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
+                }
+            }
+        }
+        iri.configure_series_labels()
+            .position(SeriesLabelPosition::UpperRight)
+            .background_style(WHITE.mix(0.9))
+            .border_style(RGBColor(160, 160, 160))
+            .label_font(font(LABEL))
+            .draw()
+            .map_err(plot::failed)?;
+        Ok(())
+    })
 }

@@ -142,7 +142,7 @@ fn render_draws_the_map() {
     assert!(status.status.success(), "{}", String::from_utf8_lossy(&status.stderr));
     let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(&out).unwrap()));
     let mut reader = decoder.read_info().unwrap();
-    let mut buf = vec![0; reader.output_buffer_size()];
+    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
     let info = reader.next_frame(&mut buf).unwrap();
     // The map's 300 px on its longer side, the margins, the colour and scale bars' room.
     let longer = info.width.max(info.height);

@@ -39,6 +39,7 @@ fn opencrg_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(contact::_contact_point_from_state, m)?)?;
     m.add_function(wrap_pyfunction!(roughness::iri, m)?)?;
     m.add_function(wrap_pyfunction!(roughness::psd, m)?)?;
+    roughness::register(m)?;
     m.add_function(wrap_pyfunction!(tools::generate, m)?)?;
     m.add_function(wrap_pyfunction!(tools::import_points, m)?)?;
     m.add_function(wrap_pyfunction!(tools::read_points, m)?)?;

@@ -49,6 +49,16 @@ pub(crate) fn tracks_list<'py>(py: Python<'py>, tracks: &[crg::roughness::Track]
     Ok(list)
 }
 
+/// ISO 8608's constants, for drawing the class bands: `ISO8608_N0` (cycles/m),
+/// `ISO8608_LIMITS` (the upper limits of Gd(n0) of classes A to G, m³) and
+/// `ISO8608_CLASSES` ("ABCDEFGH").
+pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("ISO8608_N0", crg::psd::N0)?;
+    m.add("ISO8608_LIMITS", crg::psd::CLASS_LIMITS.to_vec())?;
+    m.add("ISO8608_CLASSES", crg::psd::CLASSES.iter().collect::<String>())?;
+    Ok(())
+}
+
 /// The International Roughness Index (m/km, ASTM E1926) of a profile: elevations in m,
 /// `dx` m apart, all finite, at least 11 m long. With `segment` (m), also the IRI of each
 /// `segment` metres from the first sample: then `(iri, segments)`, a numpy array, NaN

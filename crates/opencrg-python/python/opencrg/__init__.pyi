@@ -13,6 +13,10 @@ __version__: str
 OPTIONS: list[str]
 MODIFIERS: list[str]
 
+ISO8608_N0: float
+ISO8608_LIMITS: list[float]
+ISO8608_CLASSES: str
+
 BORDER_NONE: int
 BORDER_EX_ZERO: int
 BORDER_EX_KEEP: int

@@ -1,0 +1,136 @@
+//! The command's figures. Each is drawn once, with plotters on its SVG back end (axes,
+//! ticks at 1-2-5 steps, grids, legends; text stays text), and written as SVG or, for
+//! any other extension, rasterised to PNG by resvg with the embedded DejaVu Sans
+//! (antialiased lines and text). A figure may carry a raster under its drawing: the
+//! pixels of a top view, embedded in the SVG as a PNG image.
+
+mod raster;
+mod ticks;
+
+pub use ticks::{decade, round_length, tick};
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use std::path::Path;
+
+/// The family every text of a figure names; resvg renders it with DejaVu Sans, SVG
+/// viewers with their own sans-serif face.
+pub const FAMILY: &str = "sans-serif";
+/// Text sizes in plotters' points (the SVG's pixels are 1/1.24 of them): titles, axis
+/// titles, tick labels and legends.
+pub const TITLE: f64 = 20.0;
+/// Axis titles.
+pub const AXIS: f64 = 17.0;
+/// Tick labels and legends.
+pub const LABEL: f64 = 15.0;
+
+/// The drawing area of a figure being drawn.
+pub type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+
+/// Pixels placed under a figure's drawing, one per unit of the figure.
+pub struct Image {
+    /// Top left corner in the figure.
+    pub x: u32,
+    /// Top left corner in the figure.
+    pub y: u32,
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// RGBA, row by row from the top; alpha 0 or 255.
+    pub rgba: Vec<u8>,
+}
+
+/// A finished figure.
+pub struct Figure {
+    width: u32,
+    height: u32,
+    /// The SVG elements plotters drew, without the document around them.
+    body: String,
+    image: Option<Image>,
+}
+
+/// Makes `plotters` measure text with DejaVu Sans (what resvg draws it with).
+fn register_font() -> Result<(), String> {
+    static REGISTERED: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    let ok = *REGISTERED.get_or_init(|| register_font_bytes(FontStyle::Normal) && register_font_bytes(FontStyle::Bold));
+    if ok {
+        Ok(())
+    } else {
+        Err("the embedded font could not be read".into())
+    }
+}
+
+fn register_font_bytes(style: FontStyle) -> bool {
+    let bytes = match style {
+        FontStyle::Bold => dejavu::sans::bold(),
+        _ => dejavu::sans::regular(),
+    };
+    plotters::style::register_font(FAMILY, style, bytes).is_ok()
+}
+
+/// Text style of `size` pixels.
+pub fn font(size: f64) -> TextStyle<'static> {
+    (FAMILY, size).into_font().into()
+}
+
+/// A drawing error of plotters, as the command's message.
+pub fn failed<E: std::fmt::Display>(e: E) -> String {
+    format!("drawing the figure: {e}")
+}
+
+impl Figure {
+    /// Draws a figure of `width` x `height` pixels with `draw`, over `image` if given.
+    pub fn draw(
+        width: u32,
+        height: u32,
+        image: Option<Image>,
+        draw: impl FnOnce(&Area) -> Result<(), String>,
+    ) -> Result<Figure, String> {
+        register_font()?;
+        let mut svg = String::new();
+        {
+            let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
+            draw(&root)?;
+            root.present().map_err(failed)?;
+        }
+        // plotters writes <svg ...> elements </svg>; the document is made anew around them.
+        let start = svg.find('>').map_or(0, |i| i + 1);
+        let end = svg.rfind("</svg>").unwrap_or(svg.len());
+        Ok(Figure { width, height, body: svg[start..end].trim().to_string(), image })
+    }
+
+    /// The SVG document: white ground, the image, the drawing.
+    pub fn svg(&self) -> Result<String, String> {
+        let (w, h) = (self.width, self.height);
+        let mut out = format!(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" \
+             width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\">\n<rect width=\"{w}\" height=\"{h}\" fill=\"#FFFFFF\"/>\n"
+        );
+        if let Some(image) = &self.image {
+            out.push_str(&raster::svg_image(image)?);
+        }
+        out.push_str(&self.body);
+        out.push_str("\n</svg>\n");
+        Ok(out)
+    }
+
+    /// The picture as PNG bytes: the image, then the drawing rasterised over it.
+    pub fn png(&self) -> Result<Vec<u8>, String> {
+        let document = format!(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\">{body}</svg>",
+            w = self.width,
+            h = self.height,
+            body = self.body
+        );
+        raster::png(self.width, self.height, self.image.as_ref(), &document)
+    }
+
+    /// Writes the figure: SVG for a `.svg` path, PNG otherwise; nothing is left behind
+    /// when drawing fails.
+    pub fn write(&self, path: &Path) -> Result<(), String> {
+        let svg = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("svg"));
+        let bytes = if svg { self.svg()?.into_bytes() } else { self.png()? };
+        std::fs::write(path, bytes).map_err(|e| format!("{}: {e}", path.display()))
+    }
+}
