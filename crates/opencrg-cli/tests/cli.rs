@@ -182,6 +182,11 @@ fn render_draws_the_road_and_its_sections() {
     // Coloured pixels (the road and the colour bar), not only white and black.
     let coloured = pixels.chunks(3).filter(|p| !(p[0] == p[1] && p[1] == p[2])).count();
     assert!(coloured > 2000, "{coloured} coloured pixels");
+    // The cell without elevation is drawn in grey, and the figure says what grey means.
+    let svg = d.join("top.svg");
+    let out = opencrg(&["render", road.to_str().unwrap(), svg.to_str().unwrap(), "--size", "400"], None);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    assert!(std::fs::read_to_string(&svg).unwrap().contains("no data"));
     for section in ["u=15", "v=0.5"] {
         let p = d.join(format!("profile-{}.png", &section[..1]));
         let out = opencrg(&["render", road.to_str().unwrap(), p.to_str().unwrap(), "--profile", section], None);
