@@ -35,6 +35,11 @@ fi
 msrv=$(sed -n 's/^rust-version = "\(.*\)"/\1/p' Cargo.toml)
 rustup toolchain install "$msrv" --profile minimal >/dev/null 2>&1
 cargo "+$msrv" check -q --workspace --all-targets --locked --target-dir target/msrv
+# cargo takes a registry crate of a given version to be the same forever: it unpacks each
+# packaged crate into CARGO_HOME once per version and reuses what it built from it, so
+# the copies and builds an earlier run of the same version left go first.
+find "${CARGO_HOME:-$HOME/.cargo}/registry/src" -mindepth 2 -maxdepth 2 -path '*/-*/opencrg-*' -exec rm -rf {} +
+cargo clean -q -p opencrg-core -p opencrg-odr -p opencrg-sys -p opencrg-cli
 cargo package -q --locked --allow-dirty -p opencrg-core -p opencrg-odr -p opencrg-sys -p opencrg-cli
 step "fuzzing"
 # Every fuzz target for 15 s from its seeds (stable toolchain, under 4 GB of address space).
