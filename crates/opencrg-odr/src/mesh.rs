@@ -22,7 +22,7 @@
 use crate::ground::{Probe, Surface};
 use crate::lanes::{Lane, LaneSection};
 use crate::map::Road;
-use opencrg::mesh::{Mesh, MeshGroup, VertexValues};
+use opencrg::mesh::{json_string, Mesh, MeshGroup, VertexValues};
 use opencrg::{Budget, Error, Result};
 use std::sync::Arc;
 
@@ -58,6 +58,16 @@ struct LaneRef<'a> {
     left: bool,
     /// Its place among the lanes of its side, outwards.
     rank: usize,
+}
+
+/// What one piece of a lane section is meshed from: the road (and its index in the map),
+/// the section and the lanes chosen.
+#[derive(Clone, Copy)]
+struct Piece<'a> {
+    index: usize,
+    road: &'a Road,
+    section: &'a LaneSection,
+    lanes: &'a [LaneRef<'a>],
 }
 
 /// One evaluated point of the surface.
@@ -188,12 +198,13 @@ impl Builder<'_> {
         let first = self.mesh.triangles.len();
         let mut groups: Vec<Vec<[u32; 3]>> = vec![Vec::new(); lanes.len()];
         let cuts = breaks(self.surface, index, road, section, range);
-        for piece in cuts.windows(2) {
-            let (a, b) = (piece[0], piece[1]);
+        let piece = Piece { index, road, section, lanes };
+        for cut in cuts.windows(2) {
+            let (a, b) = (cut[0], cut[1]);
             let detail = self.surface.elevation_detail(index, 0.5 * (a + b));
             let tris = match detail {
-                Some((du, dv)) => self.detail_piece(index, road, section, lanes, (a, b), (du, dv), max_error)?,
-                None => self.smooth_piece(index, road, section, lanes, (a, b), max_error.unwrap_or(DEFAULT_ERROR))?,
+                Some((du, dv)) => self.detail_piece(piece, (a, b), (du, dv), max_error)?,
+                None => self.smooth_piece(piece, (a, b), max_error.unwrap_or(DEFAULT_ERROR))?,
             };
             for (g, t) in groups.iter_mut().zip(tris) {
                 g.extend(t);
@@ -209,8 +220,8 @@ impl Builder<'_> {
                 triangles: start..start + count,
                 extras: format!(
                     r#""road":{},"lane":{id},"section":{k},"type":{}"#,
-                    json_text(&road.id),
-                    json_text(&lane.lane.kind)
+                    json_string(&road.id),
+                    json_string(&lane.lane.kind)
                 ),
             });
             start += count;
@@ -218,13 +229,13 @@ impl Builder<'_> {
         Ok(())
     }
 
-    /// The sample at row s and column lambda of a lane.
-    fn sample(&mut self, index: usize, road: &Road, section: &LaneSection, lane: &LaneRef, s: f64, l: f64) -> Sample {
-        let (inner, outer) = borders(road, section, lane, s);
+    /// The sample at row s and column lambda of a lane of `piece`.
+    fn sample(&mut self, piece: Piece, lane: &LaneRef, s: f64, l: f64) -> Sample {
+        let (inner, outer) = borders(piece.road, piece.section, lane, s);
         let width = outer - inner;
         let inside = if width.abs() > 2.0 * INSIDE { INSIDE / width.abs() } else { 0.0 };
         let t = inner + width * l.clamp(inside, 1.0 - inside);
-        match self.probe.ground_st(index, s, t) {
+        match self.probe.ground_st(piece.index, s, t) {
             Some((x, y, g)) => {
                 Sample { p: [x, y, g.z], friction: if g.friction.is_finite() { g.friction } else { -1.0 }, s, t }
             }
@@ -236,15 +247,8 @@ impl Builder<'_> {
     /// surface at the middle and the quarters of each row gap lies within `bound` / 2 of
     /// the chord; columns at the lane borders, halved the same way where a lateral shape
     /// bends the section.
-    fn smooth_piece(
-        &mut self,
-        index: usize,
-        road: &Road,
-        section: &LaneSection,
-        lanes: &[LaneRef],
-        (a, b): (f64, f64),
-        bound: f64,
-    ) -> Result<Vec<Vec<[u32; 3]>>> {
+    fn smooth_piece(&mut self, piece: Piece, (a, b): (f64, f64), bound: f64) -> Result<Vec<Vec<[u32; 3]>>> {
+        let (road, lanes) = (piece.road, piece.lanes);
         let tolerance = 0.5 * bound;
         let probes =
             if road.shape.is_empty() { vec![0.0, 0.5, 1.0] } else { (0..=8).map(|k| k as f64 / 8.0).collect() };
@@ -256,12 +260,9 @@ impl Builder<'_> {
                 || (q - p > MIN_STEP
                     && lanes.iter().any(|lane| {
                         probes.iter().any(|&l| {
-                            let (sp, sq) = (
-                                self.sample(index, road, section, lane, p, l),
-                                self.sample(index, road, section, lane, q, l),
-                            );
+                            let (sp, sq) = (self.sample(piece, lane, p, l), self.sample(piece, lane, q, l));
                             [0.25, 0.5, 0.75].iter().any(|&w| {
-                                let m = self.sample(index, road, section, lane, p + w * (q - p), l);
+                                let m = self.sample(piece, lane, p + w * (q - p), l);
                                 let chord = lerp(sp.p, sq.p, w);
                                 distance(m.p, chord) > tolerance
                             })
@@ -283,11 +284,8 @@ impl Builder<'_> {
                 let split = !road.shape.is_empty()
                     && q - p > 1.0 / 256.0
                     && [a, 0.5 * (a + b), b].iter().any(|&s| {
-                        let (sp, sq) = (
-                            self.sample(index, road, section, lane, s, p),
-                            self.sample(index, road, section, lane, s, q),
-                        );
-                        let m = self.sample(index, road, section, lane, s, 0.5 * (p + q));
+                        let (sp, sq) = (self.sample(piece, lane, s, p), self.sample(piece, lane, s, q));
+                        let m = self.sample(piece, lane, s, 0.5 * (p + q));
                         distance(m.p, lerp(sp.p, sq.p, 0.5)) > tolerance
                     });
                 if split {
@@ -300,22 +298,20 @@ impl Builder<'_> {
             }
             columns.push(cols);
         }
-        self.emit(index, road, section, lanes, &rows, &columns)
+        let grid = self.samples(piece, &rows, &columns)?;
+        Ok(self.emit(piece, &columns, grid))
     }
 
     /// The rows and columns of a piece where a CRG record lays detail: at the CRG grid's
     /// increments, thinned to `max_error` when one is given.
-    #[allow(clippy::too_many_arguments)]
     fn detail_piece(
         &mut self,
-        index: usize,
-        road: &Road,
-        section: &LaneSection,
-        lanes: &[LaneRef],
+        piece: Piece,
         (a, b): (f64, f64),
         (du, dv): (f64, f64),
         max_error: Option<f64>,
     ) -> Result<Vec<Vec<[u32; 3]>>> {
+        let (road, section, lanes) = (piece.road, piece.section, piece.lanes);
         let n_rows = ((b - a) / du).ceil().max(1.0);
         let widths: Vec<f64> = lanes
             .iter()
@@ -335,20 +331,11 @@ impl Builder<'_> {
         self.budget.admit(&request, samples, "samples", SAMPLE_BYTES + VERTEX_BYTES)?;
         let rows: Vec<f64> = (0..=n_rows as usize).map(|j| a + (b - a) * j as f64 / n_rows).collect();
         let columns: Vec<Vec<f64>> = n_cols.iter().map(|&n| (0..=n as usize).map(|m| m as f64 / n).collect()).collect();
-        let Some(bound) = max_error else {
-            return self.emit(index, road, section, lanes, &rows, &columns);
-        };
         // Every sample of the full resolution, lane by lane, row by row.
-        let mut grid: Vec<Vec<Sample>> = Vec::with_capacity(lanes.len());
-        for (lane, cols) in lanes.iter().zip(&columns) {
-            let mut g = Vec::with_capacity(rows.len() * cols.len());
-            for &s in &rows {
-                for &l in cols {
-                    g.push(self.sample(index, road, section, lane, s, l));
-                }
-            }
-            grid.push(g);
-        }
+        let grid = self.samples(piece, &rows, &columns)?;
+        let Some(bound) = max_error else {
+            return Ok(self.emit(piece, &columns, grid));
+        };
         let mut keep_rows = vec![false; rows.len()];
         keep_rows[0] = true;
         keep_rows[rows.len() - 1] = true;
@@ -436,58 +423,71 @@ impl Builder<'_> {
                 break;
             }
         }
-        let rows: Vec<f64> = (0..rows.len()).filter(|&j| keep_rows[j]).map(|j| rows[j]).collect();
+        // The samples of the rows and columns kept.
+        let kept: Vec<Vec<Sample>> = grid
+            .iter()
+            .zip(&keep_cols)
+            .map(|(g, cols)| {
+                let nc = cols.len();
+                g.iter().enumerate().filter(|(i, _)| keep_rows[i / nc] && cols[i % nc]).map(|(_, v)| *v).collect()
+            })
+            .collect();
         let columns: Vec<Vec<f64>> = columns
             .iter()
             .zip(&keep_cols)
             .map(|(c, k)| c.iter().zip(k).filter(|(_, &keep)| keep).map(|(&l, _)| l).collect())
             .collect();
-        self.emit(index, road, section, lanes, &rows, &columns)
+        Ok(self.emit(piece, &columns, kept))
     }
 
-    /// The vertices at every row and column of each lane, and two triangles per quad
-    /// whose corners all have a height, counter-clockwise seen from above.
-    fn emit(
-        &mut self,
-        index: usize,
-        road: &Road,
-        section: &LaneSection,
-        lanes: &[LaneRef],
-        rows: &[f64],
-        columns: &[Vec<f64>],
-    ) -> Result<Vec<Vec<[u32; 3]>>> {
+    /// The samples at every row and column of each lane of `piece`, row by row; the
+    /// piece's first and last rows evaluated just inside it, so that where a record starts
+    /// or ends (a CRG record's heights, a lane's height) each piece takes its own side.
+    /// Refused: more vertices than 32-bit indices or the budget allow.
+    fn samples(&mut self, piece: Piece, rows: &[f64], columns: &[Vec<f64>]) -> Result<Vec<Vec<Sample>>> {
         let count: usize = columns.iter().map(|c| c.len() * rows.len()).sum();
         let total = self.mesh.positions.len() + count;
         if total > u32::MAX as usize {
             return Err(Error::Request(format!("a mesh of {total} vertices is more than 32-bit indices can hold")));
         }
         self.budget.admit(&"the map's mesh", total as f64, "vertices", VERTEX_BYTES)?;
-        let mut out = Vec::with_capacity(lanes.len());
-        // The piece's first and last rows are evaluated just inside it, so that where a
-        // record starts or ends (a CRG record's heights, a lane's height) each piece
-        // takes its own side.
         let (a, b) = (rows[0], rows[rows.len() - 1]);
         let inside = |s: f64| if rows.len() < 2 { s } else { s.clamp(a + INSIDE, b - INSIDE) };
-        for (lane, cols) in lanes.iter().zip(columns) {
-            let first = self.mesh.positions.len();
+        let mut grid = Vec::with_capacity(piece.lanes.len());
+        for (lane, cols) in piece.lanes.iter().zip(columns) {
+            let mut g = Vec::with_capacity(rows.len() * cols.len());
             for &s in rows {
-                let s = inside(s);
                 for &l in cols {
-                    let v = self.sample(index, road, section, lane, s, l);
-                    self.mesh.positions.push(v.p);
-                    self.mesh.texcoords.push([(s / road.length.max(1e-9)) as f32, l as f32]);
-                    self.friction.push(v.friction as f32);
-                    self.road_of.push(index as f32);
-                    self.lane_of.push(lane.lane.id as f32);
-                    self.s_of.push(v.s as f32);
-                    self.t_of.push(v.t as f32);
+                    g.push(self.sample(piece, lane, inside(s), l));
                 }
             }
+            grid.push(g);
+        }
+        Ok(grid)
+    }
+
+    /// The vertices of each lane's samples (row by row, `columns` of that lane a row) and
+    /// two triangles per quad whose corners all have a height, counter-clockwise seen from
+    /// above.
+    fn emit(&mut self, piece: Piece, columns: &[Vec<f64>], grid: Vec<Vec<Sample>>) -> Vec<Vec<[u32; 3]>> {
+        let mut out = Vec::with_capacity(piece.lanes.len());
+        for ((lane, cols), samples) in piece.lanes.iter().zip(columns).zip(grid) {
+            let first = self.mesh.positions.len();
             let nc = cols.len();
+            for (i, v) in samples.iter().enumerate() {
+                self.mesh.positions.push(v.p);
+                self.mesh.texcoords.push([(v.s / piece.road.length.max(1e-9)) as f32, cols[i % nc] as f32]);
+                self.friction.push(v.friction as f32);
+                self.road_of.push(piece.index as f32);
+                self.lane_of.push(lane.lane.id as f32);
+                self.s_of.push(v.s as f32);
+                self.t_of.push(v.t as f32);
+            }
+            let nr = samples.len() / nc.max(1);
             let id = |j: usize, m: usize| (first + j * nc + m) as u32;
             let ok = |i: u32| self.mesh.positions[i as usize].iter().all(|c| c.is_finite());
             let mut tris = Vec::new();
-            for j in 0..rows.len().saturating_sub(1) {
+            for j in 0..nr.saturating_sub(1) {
                 for m in 0..nc.saturating_sub(1) {
                     let (p00, p10, p11, p01) = (id(j, m), id(j + 1, m), id(j + 1, m + 1), id(j, m + 1));
                     if !(ok(p00) && ok(p10) && ok(p11) && ok(p01)) {
@@ -500,7 +500,7 @@ impl Builder<'_> {
             }
             out.push(tris);
         }
-        Ok(out)
+        out
     }
 
     /// The triangle with its corners counter-clockwise seen from above.
@@ -536,23 +536,6 @@ fn normals(mesh: &Mesh) -> Vec<[f32; 3]> {
             }
         })
         .collect()
-}
-
-/// `text` as a JSON string.
-fn json_text(text: &str) -> String {
-    let mut out = String::from("\"");
-    for c in text.chars() {
-        match c {
-            '"' | '\\' => {
-                out.push('\\');
-                out.push(c);
-            }
-            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
-            c => out.push(c),
-        }
-    }
-    out.push('"');
-    out
 }
 
 fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {

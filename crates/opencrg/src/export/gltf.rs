@@ -5,28 +5,12 @@
 //! own values per vertex as attributes `_NAME`; triangles as 32-bit indices, one
 //! primitive per group of the mesh (its name and what it is in the primitive's `extras`).
 
-use crate::mesh::{Mesh, MeshGroup};
+use crate::mesh::{json_string, Mesh, MeshGroup};
 use std::io::{self, Write};
 
 /// glTF's frame from the road's: (x, y, z) to (x, z, -y).
 fn y_up(p: [f64; 3]) -> [f64; 3] {
     [p[0], p[2], -p[1]]
-}
-
-/// `text` as a JSON string.
-fn json_string(text: &str) -> String {
-    let mut out = String::with_capacity(text.len() + 2);
-    out.push('"');
-    for c in text.chars() {
-        match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
-            c => out.push(c),
-        }
-    }
-    out.push('"');
-    out
 }
 
 /// A JSON number: integers as such, others in Rust's shortest round-trip form.

@@ -38,6 +38,22 @@ pub struct Mesh {
     pub values: Vec<VertexValues>,
 }
 
+/// `text` as a JSON string (for a group's `extras`).
+pub fn json_string(text: &str) -> String {
+    let mut out = String::with_capacity(text.len() + 2);
+    out.push('"');
+    for c in text.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
+}
+
 /// A named part of a mesh's triangles.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct MeshGroup {
