@@ -14,3 +14,4 @@ mkdir -p "$out"
 "$opencrg" render "$road" "$out/demo_road_profile.png" --profile u=60
 "$opencrg" roughness "$road" --plot "$out/demo_roughness.png" >/dev/null
 "$opencrg" odr render ../shared/opendrive/carla/Town03.xodr "$out/town03.png" --size 900 2>/dev/null
+"$opencrg" odr render examples/data/demo_map.xodr "$out/demo_map.png" --size 900 2>/dev/null

@@ -5,9 +5,10 @@ use crate::plot::{self, font, tick, Area, Figure, Image, AXIS, LABEL, TITLE};
 use opencrg::{Budget, ContactPoint};
 use plotters::prelude::*;
 
-/// The memory a pixel of the top view takes while it is made (elevation, slope, colour,
-/// the figure's pixels, the encoded picture or SVG).
-pub(crate) const PIXEL_BYTES: f64 = 48.0;
+/// The memory a pixel of the top view takes while it is made (elevation, slope and its
+/// detail, the sums for the local mean, colour, the figure's pixels, the encoded picture
+/// or SVG).
+pub(crate) const PIXEL_BYTES: f64 = 72.0;
 /// The longest side of a top view, in pixels.
 pub const MAX_SIZE: usize = 20_000;
 
@@ -132,44 +133,108 @@ const BELOW: u32 = 52;
 const SCALE_BAR: u32 = 48;
 const COLOUR_BAR: u32 = 170;
 
-/// The pixels of the raster: coloured by height with hill shading towards a light in
-/// the north-west (scaled by the slopes' 98th percentile, so the relief shows at any
-/// scale), grey without data, transparent off the surface. Also the height range.
+/// The window over which the shading takes the surface's own grade away, in metres.
+const GRADE_WINDOW: f64 = 2.0;
+/// A slope whose variation exceeds this many times the relief is a step, left out of
+/// the means.
+const STEP_PER_RELIEF: f64 = 4.0;
+/// Full light or shade at this many times the median of the slopes' variation.
+const RELIEF_PER_MEDIAN: f64 = 1.5;
+/// The least slope variation the shading shows at full strength: smoother surfaces stay
+/// evenly lit instead of showing rounding.
+const LEAST_RELIEF: f64 = 1e-3;
+
+/// The pixels of the raster: coloured by height, with hill shading towards a light in the
+/// north-west from the slopes less their mean over [`GRADE_WINDOW`] (the road's grade and
+/// cross slope), scaled by the median of what is left, so that a CRG file's detail shows
+/// on a sloped road at any scale; grey without data, transparent off the surface.
+/// Also the height range.
 fn shaded(r: &Raster) -> (Vec<u8>, Option<(f64, f64)>) {
     let (mw, mh, z) = (r.width, r.height, r.z);
     let finite = || z.iter().flatten().copied().filter(|v| v.is_finite());
     let (zmin, zmax) = finite().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)));
     let range = zmin.is_finite().then_some((zmin, zmax));
     let zspan = if zmax > zmin { zmax - zmin } else { 1.0 };
-    let at = |r: usize, c: usize| z[r * mw + c].filter(|v| v.is_finite());
-    let slope_at = |row: usize, c: usize| -> Option<f64> {
-        let here = at(row, c)?;
-        let east = if c + 1 < mw { at(row, c + 1) } else { None }.unwrap_or(here);
-        let west = if c > 0 { at(row, c - 1) } else { None }.unwrap_or(here);
-        let north = if row > 0 { at(row - 1, c) } else { None }.unwrap_or(here);
-        let south = if row + 1 < mh { at(row + 1, c) } else { None }.unwrap_or(here);
-        Some(((west - east) + (north - south)) / (2.0 * r.px))
-    };
-    let mut slopes: Vec<f64> =
-        (0..mh).flat_map(|row| (0..mw).filter_map(move |c| slope_at(row, c))).map(f64::abs).collect();
-    slopes.sort_by(f64::total_cmp);
-    let relief = slopes.get(slopes.len() * 98 / 100).copied().filter(|s| *s > 0.0).unwrap_or(1.0);
+    let light = lights(r);
     let mut rgba = vec![0u8; mw * mh * 4];
-    for row in 0..mh {
-        for c in 0..mw {
-            let colour = match z[row * mw + c] {
-                None => continue,
-                Some(v) if !v.is_finite() => NO_DATA,
-                Some(v) => {
-                    let light = 0.75 + 0.25 * (slope_at(row, c).unwrap_or(0.0) / relief).clamp(-1.0, 1.0);
-                    shade(colour((v - zmin) / zspan), light)
-                }
-            };
-            let k = (row * mw + c) * 4;
-            rgba[k..k + 4].copy_from_slice(&[colour[0], colour[1], colour[2], 255]);
-        }
+    for (k, cell) in z.iter().enumerate() {
+        let colour = match cell {
+            None => continue,
+            Some(v) if !v.is_finite() => NO_DATA,
+            Some(v) => shade(colour((v - zmin) / zspan), light[k]),
+        };
+        rgba[k * 4..k * 4 + 4].copy_from_slice(&[colour[0], colour[1], colour[2], 255]);
     }
     (rgba, range)
+}
+
+/// The light on each pixel, 0.5 (shade) to 1 (lit), 0.75 where it is flat or unknown.
+fn lights(r: &Raster) -> Vec<f64> {
+    let (mw, mh, z) = (r.width, r.height, r.z);
+    let at = |r: usize, c: usize| z[r * mw + c].filter(|v| v.is_finite());
+    // The rise towards the light along one axis from the neighbours either side:
+    // centred where both are on the surface, one-sided at its edges.
+    let rise = |before: Option<f64>, here: f64, after: Option<f64>| match (before, after) {
+        (Some(b), Some(a)) => (b - a) / (2.0 * r.px),
+        (Some(b), None) => (b - here) / r.px,
+        (None, Some(a)) => (here - a) / r.px,
+        (None, None) => 0.0,
+    };
+    let slope_at = |row: usize, c: usize| -> Option<f64> {
+        let here = at(row, c)?;
+        let east = if c + 1 < mw { at(row, c + 1) } else { None };
+        let west = if c > 0 { at(row, c - 1) } else { None };
+        let north = if row > 0 { at(row - 1, c) } else { None };
+        let south = if row + 1 < mh { at(row + 1, c) } else { None };
+        Some(rise(west, here, east) + rise(north, here, south))
+    };
+    let slopes: Vec<f64> = (0..mh).flat_map(|row| (0..mw).map(move |c| slope_at(row, c).unwrap_or(f64::NAN))).collect();
+    let k = (GRADE_WINDOW / r.px).round().clamp(2.0, 64.0) as usize;
+    // The median, not a high percentile: steps at a CRG record's edges are lines of few
+    // pixels but can outweigh a whole road's texture at the top of the distribution.
+    let relief_of = |detail: &[f64]| {
+        let mut sizes: Vec<f64> = detail.iter().filter(|d| d.is_finite()).map(|d| d.abs()).collect();
+        let middle = sizes.len() / 2;
+        let median = if sizes.is_empty() { 0.0 } else { *sizes.select_nth_unstable_by(middle, f64::total_cmp).1 };
+        (RELIEF_PER_MEDIAN * median).max(LEAST_RELIEF)
+    };
+    let first = detail(&slopes, mw, mh, k, |_| true);
+    let relief = relief_of(&first);
+    // Steps (far beyond the texture) are left out of the means, which they would shift
+    // over a whole window around them.
+    let detail = detail(&slopes, mw, mh, k, |i| first[i].abs() <= STEP_PER_RELIEF * relief);
+    drop((slopes, first));
+    let relief = relief_of(&detail);
+    detail.iter().map(|&d| 0.75 + 0.25 * if d.is_finite() { (d / relief).clamp(-1.0, 1.0) } else { 0.0 }).collect()
+}
+
+/// Each slope less the mean of the slopes within `k` pixels of it that `counted` keeps (a
+/// box, through sums over the rectangle from the corner); NaN where there is no slope.
+fn detail(slopes: &[f64], mw: usize, mh: usize, k: usize, counted: impl Fn(usize) -> bool) -> Vec<f64> {
+    let w = mw + 1;
+    let mut sum = vec![0.0f64; w * (mh + 1)];
+    let mut count = vec![0u32; w * (mh + 1)];
+    for row in 0..mh {
+        for c in 0..mw {
+            let s = slopes[row * mw + c];
+            let (v, n) = if s.is_finite() && counted(row * mw + c) { (s, 1) } else { (0.0, 0) };
+            let i = (row + 1) * w + c + 1;
+            sum[i] = v + sum[i - 1] + sum[i - w] - sum[i - w - 1];
+            count[i] = n + count[i - 1] + count[i - w] - count[i - w - 1];
+        }
+    }
+    let boxed = |values: &[f64], counts: &[u32], row: usize, c: usize| {
+        let (r0, r1, c0, c1) = (row.saturating_sub(k), (row + k + 1).min(mh), c.saturating_sub(k), (c + k + 1).min(mw));
+        let (a, b, cc, d) = (r0 * w + c0, r0 * w + c1, r1 * w + c0, r1 * w + c1);
+        (values[d] - values[b] - values[cc] + values[a], counts[d] + counts[a] - counts[b] - counts[cc])
+    };
+    (0..mh)
+        .flat_map(|row| (0..mw).map(move |c| (row, c)))
+        .map(|(row, c)| {
+            let (total, n) = boxed(&sum, &count, row, c);
+            slopes[row * mw + c] - total / f64::from(n.max(1))
+        })
+        .collect()
 }
 
 /// The top view of heights on a raster: the map in x and y with ticks, a colour bar
@@ -351,4 +416,36 @@ pub fn profile(cp: &mut ContactPoint, name: &str, section: Section) -> Result<Fi
             .map_err(plot::failed)?;
         Ok(())
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A road climbing 5 % with a cross slope of 3 %, bumps of 2 mm a metre apart across
+    /// its western half (as a CRG record lays them on), a step of 5 cm along its middle.
+    #[test]
+    fn the_shading_shows_the_texture_on_a_graded_road_and_not_its_grade() {
+        let (mw, mh, px) = (200, 60, 0.1);
+        let z: Vec<Option<f64>> = (0..mh * mw)
+            .map(|k| {
+                let (x, y) = ((k % mw) as f64 * px, -((k / mw) as f64) * px);
+                let bumps = if x < 10.0 { 0.002 * (2.0 * std::f64::consts::PI * x).sin() } else { 0.0 };
+                let step = if k / mw >= mh / 2 { 0.05 } else { 0.0 };
+                Some(0.05 * x + 0.03 * y + bumps + step)
+            })
+            .collect();
+        let light = lights(&Raster { z: &z, width: mw, height: mh, px, west: 0.0, north: 0.0 });
+        // Away from the step and from where the bumps end.
+        let rows = (5..mh / 2 - 5).chain(mh / 2 + 5..mh - 5);
+        let span = |cols: std::ops::Range<usize>| {
+            let light = &light;
+            let values: Vec<f64> = rows.clone().flat_map(|r| cols.clone().map(move |c| light[r * mw + c])).collect();
+            values.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+                - values.iter().copied().fold(f64::INFINITY, f64::min)
+        };
+        let (bumps, plain) = (span(5..80), span(125..195));
+        assert!(bumps > 0.3, "the bumps: lights from shade to lit, {bumps}");
+        assert!(plain < 0.01, "the plain graded road: evenly lit, {plain}");
+    }
 }
