@@ -1,7 +1,7 @@
 //! Pictures of a road: a top view in x/y coloured by elevation with hill shading, axes,
 //! a colour bar and a scale bar; and sections along u or across v as line plots.
 
-use crate::plot::{self, font, tick, Area, Figure, Image, AXIS, LABEL, TITLE};
+use crate::plot::{self, font, tick, Area, Figure, Image, LABEL, TITLE};
 use opencrg::{Budget, ContactPoint};
 use plotters::prelude::*;
 
@@ -256,8 +256,7 @@ pub(crate) fn height_picture(r: &Raster, title: &str) -> Result<Figure, String> 
             .y_label_area_size(LEFT)
             .build_cartesian_2d(x0..x1, y0..y1)
             .map_err(plot::failed)?;
-        chart
-            .configure_mesh()
+        plot::lettered(&mut chart.configure_mesh())
             .disable_mesh()
             .x_labels((mw as usize / 90).max(4))
             .y_labels((mh as usize / 50).max(4))
@@ -265,8 +264,6 @@ pub(crate) fn height_picture(r: &Raster, title: &str) -> Result<Figure, String> 
             .y_label_formatter(&|v| tick(*v))
             .x_desc("x [m]")
             .y_desc("y [m]")
-            .label_style(font(LABEL))
-            .axis_desc_style(font(AXIS))
             .draw()
             .map_err(plot::failed)?;
         chart
@@ -318,15 +315,12 @@ fn colour_bar(
             Rectangle::new([(0.0, lo + a * (hi - lo)), (1.0, lo + b * (hi - lo))], RGBColor(red, green, blue).filled())
         }))
         .map_err(plot::failed)?;
-    chart
-        .configure_mesh()
+    plot::lettered(&mut chart.configure_mesh())
         .disable_mesh()
         .disable_x_axis()
         .y_labels(((height / 40) as usize).max(4))
         .y_label_formatter(&|v| tick(*v))
         .y_desc("z [m]")
-        .label_style(font(LABEL))
-        .axis_desc_style(font(AXIS))
         .draw()
         .map_err(plot::failed)?;
     chart.plotting_area().draw(&Rectangle::new([(0.0, lo), (1.0, hi)], BLACK.stroke_width(1))).map_err(plot::failed)?;
@@ -392,18 +386,13 @@ pub fn profile(cp: &mut ContactPoint, name: &str, section: Section) -> Result<Fi
             .y_label_area_size(LEFT)
             .build_cartesian_2d(from..to, zlo..zhi)
             .map_err(plot::failed)?;
-        chart
-            .configure_mesh()
+        plot::gridded(&mut chart.configure_mesh())
             .x_labels(10)
             .y_labels(8)
             .x_label_formatter(&|v| tick(*v))
             .y_label_formatter(&|v| tick(*v))
             .x_desc(along)
             .y_desc("z [m]")
-            .label_style(font(LABEL))
-            .axis_desc_style(font(AXIS))
-            .bold_line_style(RGBColor(210, 210, 210))
-            .light_line_style(RGBColor(238, 238, 238))
             .draw()
             .map_err(plot::failed)?;
         let line = RGBColor(30, 90, 200).stroke_width(2);

@@ -2,7 +2,7 @@
 //! table, as JSON, and as a figure (the densities on log-log axes among the class
 //! bands, the IRI segment by segment along u).
 
-use crate::plot::{self, font, tick, Figure, AXIS, LABEL, TITLE};
+use crate::plot::{self, font, tick, Figure, AXIS, TITLE};
 use opencrg::psd::{CLASSES, CLASS_LIMITS, N0};
 use opencrg::roughness::Track;
 use plotters::prelude::*;
@@ -129,17 +129,13 @@ pub fn plot(tracks: &[Track], name: &str, segment: f64) -> Result<Figure, String
             .y_label_area_size(LEFT)
             .build_cartesian_2d((N_RANGE.0..N_RANGE.1).log_scale(), (g_range.0..g_range.1).log_scale())
             .map_err(plot::failed)?;
-        psd.configure_mesh()
+        plot::gridded(&mut psd.configure_mesh())
             .x_labels(8)
             .y_labels(12)
             .x_label_formatter(&|n| plot::decade(*n))
             .y_label_formatter(&|g| plot::decade(*g))
             .x_desc("n [cycles/m]")
             .y_desc("Gd(n) [m³]")
-            .label_style(font(LABEL))
-            .axis_desc_style(font(AXIS))
-            .bold_line_style(RGBColor(205, 205, 205))
-            .light_line_style(RGBColor(238, 238, 238))
             .draw()
             .map_err(plot::failed)?;
         let (g_lo, g_hi) = (g_range.0.log10(), g_range.1.log10());
@@ -175,13 +171,7 @@ pub fn plot(tracks: &[Track], name: &str, segment: f64) -> Result<Figure, String
                 .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
             psd.draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled()))).map_err(plot::failed)?;
         }
-        psd.configure_series_labels()
-            .position(SeriesLabelPosition::UpperRight)
-            .background_style(WHITE.mix(0.9))
-            .border_style(RGBColor(160, 160, 160))
-            .label_font(font(LABEL))
-            .draw()
-            .map_err(plot::failed)?;
+        plot::legend(&mut psd)?;
 
         // The IRI per segment: steps along u.
         let segments = tracks.iter().flat_map(|t| t.segments.iter());
@@ -201,17 +191,13 @@ pub fn plot(tracks: &[Track], name: &str, segment: f64) -> Result<Figure, String
             .y_label_area_size(LEFT)
             .build_cartesian_2d(u0..u1, 0.0..i_hi)
             .map_err(plot::failed)?;
-        iri.configure_mesh()
+        plot::gridded(&mut iri.configure_mesh())
             .x_labels(10)
             .y_labels(6)
             .x_label_formatter(&|v| tick(*v))
             .y_label_formatter(&|v| tick(*v))
             .x_desc("u [m]")
             .y_desc("IRI [m/km]")
-            .label_style(font(LABEL))
-            .axis_desc_style(font(AXIS))
-            .bold_line_style(RGBColor(205, 205, 205))
-            .light_line_style(RGBColor(238, 238, 238))
             .draw()
             .map_err(plot::failed)?;
         for (t, colour) in tracks.iter().zip(COLOURS.iter().cycle()) {
@@ -234,13 +220,7 @@ pub fn plot(tracks: &[Track], name: &str, segment: f64) -> Result<Figure, String
                 }
             }
         }
-        iri.configure_series_labels()
-            .position(SeriesLabelPosition::UpperRight)
-            .background_style(WHITE.mix(0.9))
-            .border_style(RGBColor(160, 160, 160))
-            .label_font(font(LABEL))
-            .draw()
-            .map_err(plot::failed)?;
+        plot::legend(&mut iri)?;
         Ok(())
     })
 }

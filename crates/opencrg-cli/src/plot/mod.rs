@@ -9,7 +9,9 @@ mod ticks;
 
 pub use ticks::{decade, round_length, tick};
 
-use plotters::coord::Shift;
+use plotters::chart::MeshStyle;
+use plotters::coord::ranged1d::Ranged;
+use plotters::coord::{CoordTranslate, Shift};
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -74,6 +76,36 @@ pub fn font(size: f64) -> TextStyle<'static> {
     (FAMILY, size).into_font().into()
 }
 
+/// The grid's lines at the labelled ticks and between them.
+const GRID: RGBColor = RGBColor(205, 205, 205);
+const GRID_FINE: RGBColor = RGBColor(238, 238, 238);
+
+/// An axis mesh's text in the figures' sizes: tick labels and axis titles.
+pub fn lettered<'m, 'a, 'b, X: Ranged, Y: Ranged>(
+    mesh: &'m mut MeshStyle<'a, 'b, X, Y, SVGBackend<'a>>,
+) -> &'m mut MeshStyle<'a, 'b, X, Y, SVGBackend<'a>> {
+    mesh.label_style(font(LABEL)).axis_desc_style(font(AXIS))
+}
+
+/// [`lettered`], and the grid in the figures' greys.
+pub fn gridded<'m, 'a, 'b, X: Ranged, Y: Ranged>(
+    mesh: &'m mut MeshStyle<'a, 'b, X, Y, SVGBackend<'a>>,
+) -> &'m mut MeshStyle<'a, 'b, X, Y, SVGBackend<'a>> {
+    lettered(mesh).bold_line_style(GRID).light_line_style(GRID_FINE)
+}
+
+/// The chart's legend of its labelled series, in its upper right corner.
+pub fn legend<'a, CT: CoordTranslate>(chart: &mut ChartContext<'a, SVGBackend<'a>, CT>) -> Result<(), String> {
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.9))
+        .border_style(RGBColor(160, 160, 160))
+        .label_font(font(LABEL))
+        .draw()
+        .map_err(failed)
+}
+
 /// A drawing error of plotters, as the command's message.
 pub fn failed<E: std::fmt::Display>(e: E) -> String {
     format!("drawing the figure: {e}")
@@ -100,30 +132,33 @@ impl Figure {
         Ok(Figure { width, height, body: svg[start..end].trim().to_string(), image })
     }
 
-    /// The SVG document: white ground, the image, the drawing.
-    pub fn svg(&self) -> Result<String, String> {
+    /// The SVG document of the drawing, with `ground` the white ground and the image
+    /// under it (the PNG path draws those itself).
+    fn document(&self, ground: bool) -> Result<String, String> {
         let (w, h) = (self.width, self.height);
         let mut out = format!(
             "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" \
-             width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\">\n<rect width=\"{w}\" height=\"{h}\" fill=\"#FFFFFF\"/>\n"
+             width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\">\n"
         );
-        if let Some(image) = &self.image {
-            out.push_str(&raster::svg_image(image)?);
+        if ground {
+            out.push_str(&format!("<rect width=\"{w}\" height=\"{h}\" fill=\"#FFFFFF\"/>\n"));
+            if let Some(image) = &self.image {
+                out.push_str(&raster::svg_image(image)?);
+            }
         }
         out.push_str(&self.body);
         out.push_str("\n</svg>\n");
         Ok(out)
     }
 
+    /// The SVG document: white ground, the image, the drawing.
+    pub fn svg(&self) -> Result<String, String> {
+        self.document(true)
+    }
+
     /// The picture as PNG bytes: the image, then the drawing rasterised over it.
     pub fn png(&self) -> Result<Vec<u8>, String> {
-        let document = format!(
-            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\">{body}</svg>",
-            w = self.width,
-            h = self.height,
-            body = self.body
-        );
-        raster::png(self.width, self.height, self.image.as_ref(), &document)
+        raster::png(self.width, self.height, self.image.as_ref(), &self.document(false)?)
     }
 
     /// Writes the figure: SVG for a `.svg` path, PNG otherwise; nothing is left behind

@@ -3,13 +3,14 @@
 
 use super::Image;
 use base64::Engine;
-use resvg::tiny_skia::{IntSize, Pixmap, PixmapPaint, Transform};
+use resvg::tiny_skia::{Pixmap, PixmapPaint, PixmapRef, Transform};
 use resvg::usvg;
 
-/// The image as a pixmap (premultiplied; its pixels are opaque or fully transparent).
-fn pixmap(image: &Image) -> Result<Pixmap, String> {
-    let size = IntSize::from_wh(image.width, image.height).ok_or("an empty image")?;
-    Pixmap::from_vec(image.rgba.clone(), size).ok_or_else(|| "an image of the wrong size".to_string())
+/// The image's pixels as a pixmap, without a copy (premultiplied as they stand: each is
+/// opaque or fully transparent).
+fn pixmap(image: &Image) -> Result<PixmapRef<'_>, String> {
+    PixmapRef::from_bytes(&image.rgba, image.width, image.height)
+        .ok_or_else(|| "an image of the wrong size".to_string())
 }
 
 /// The image as an `<image>` element holding a PNG, drawn without smoothing.
@@ -46,7 +47,7 @@ pub fn png(width: u32, height: u32, image: Option<&Image>, document: &str) -> Re
         canvas.draw_pixmap(
             image.x as i32,
             image.y as i32,
-            pixels.as_ref(),
+            pixels,
             &PixmapPaint::default(),
             Transform::identity(),
             None,
