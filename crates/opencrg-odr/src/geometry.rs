@@ -57,7 +57,7 @@ pub struct Geometry {
 }
 
 /// A point of a reference line: x, y and heading.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Pose {
     /// x (m).
     pub x: f64,
@@ -107,9 +107,25 @@ fn turned_path(a: f64, b: f64, length: f64) -> (f64, f64) {
     (length * (1.0 - 0.5 * i2 + (1.0 / 24.0) * i4), length * (i1 - (1.0 / 6.0) * i3))
 }
 
+/// Where a path turning by `k0 t + rate t^2 / 2` at t ends after `delta`, in the frame of
+/// its start, by quadrature (the turn `turn` at most [`trig::SMALL`]).
+#[inline(never)]
+fn turning_path(k0: f64, rate: f64, delta: f64, turn: f64) -> (f64, f64) {
+    integrate_pair(
+        |t| {
+            let (s, c) = trig::small_sin_cos(t * (k0 + 0.5 * rate * t));
+            (c, s)
+        },
+        0.0,
+        delta,
+        1,
+        points_for_turn(turn),
+    )
+}
+
 /// A pose of a record with what moving on from it cheaply needs: its distance from the
 /// record's start, the heading's sine and cosine, and on cubic curves the curve's parameter.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub(crate) struct Station {
     /// Its distance from the record's start.
     pub ds: f64,
@@ -201,8 +217,9 @@ impl Geometry {
     /// `from`'s parameter (within an eighth of the curve). `None` beyond those bounds.
     /// With it, whether `ds` is near `from`: the cheapest ways served (a turn within
     /// [`CLOSED_TURN`], a 256th of a cubic curve), which a wheel moving centimetres per
-    /// step keeps to.
-    pub(crate) fn station_from(&self, from: &Station, ds: f64) -> Option<(Station, bool)> {
+    /// step keeps to. The station is written to `out`.
+    #[inline(always)]
+    pub(crate) fn station_from(&self, from: &Station, ds: f64, out: &mut Station) -> Option<bool> {
         let delta = ds - from.ds;
         let (sf, cf) = from.frame;
         let (pose, sin, cos, param, near) = match self.shape {
@@ -223,22 +240,12 @@ impl Geometry {
                 if !(turn <= trig::SMALL) {
                     return None;
                 }
-                let angle = |t: f64| t * (k0 + 0.5 * rate * t);
                 let (lx, ly) = if turn <= CLOSED_TURN {
                     turned_path(k0 * delta, 0.5 * rate * delta * delta, delta)
                 } else {
-                    integrate_pair(
-                        |t| {
-                            let (s, c) = trig::small_sin_cos(angle(t));
-                            (c, s)
-                        },
-                        0.0,
-                        delta,
-                        1,
-                        points_for_turn(turn),
-                    )
+                    turning_path(k0, rate, delta, turn)
                 };
-                let (st, ct) = trig::small_sin_cos(angle(delta));
+                let (st, ct) = trig::small_sin_cos(delta * (k0 + 0.5 * rate * delta));
                 let p = from.pose;
                 let pose = Pose {
                     x: p.x + from.cos * lx - from.sin * ly,
@@ -264,7 +271,8 @@ impl Geometry {
                 (pose, sf * tu + cf * tv, cf * tu - sf * tv, p, near)
             }
         };
-        Some((Station { ds, pose, sin, cos, param, frame: from.frame }, near))
+        *out = Station { ds, pose, sin, cos, param, frame: from.frame };
+        Some(near)
     }
 
     /// The length of the curve itself: for poly3 and paramPoly3 the arc length over the
@@ -462,7 +470,8 @@ mod tests {
             let from = g.station(20.0);
             let (mut near, mut far, mut refused) = (0, 0, 0);
             for delta in [0.0, 1e-7, 0.003, -0.02, 0.05, 0.4, -1.5, 2.5, 4.0, -8.0, 15.0] {
-                let Some((st, close)) = g.station_from(&from, 20.0 + delta) else {
+                let mut st = Station::default();
+                let Some(close) = g.station_from(&from, 20.0 + delta, &mut st) else {
                     refused += 1;
                     continue;
                 };

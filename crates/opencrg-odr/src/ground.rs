@@ -6,11 +6,10 @@
 //! index, and its own contact points on the CRG files.
 
 use crate::crg::{self, CrgFiles, CrgPoints};
-use crate::geometry::Station;
-use crate::lanes::LaneSpan;
-use crate::locate::{Anchor, RoadIndex, RoadPos};
+use crate::locate::{Anchor, Footing, RoadIndex, RoadPos};
 use crate::map::{CrgPurpose, CrgRecord, Map, Road};
-use crate::surface::span_height;
+use crate::patch::{layer_at, Patches};
+use crate::surface::{height_across, span_height};
 use crate::trig;
 use opencrg::Result;
 use std::path::Path;
@@ -24,6 +23,8 @@ pub struct Surface {
     /// Per road: the CRG records that apply to it (its own, then its junction's), with
     /// the index of their file.
     layers: Vec<Vec<(CrgRecord, usize)>>,
+    /// Per road: its patches, the records holding between its cuts.
+    patches: Vec<Patches>,
 }
 
 /// What the ground is at a world point.
@@ -61,10 +62,11 @@ impl Surface {
             .map(|road| {
                 let junction = road.junction.as_ref().and_then(|j| map.junctions.iter().find(|x| &x.id == j));
                 let records = road.crg.iter().chain(junction.into_iter().flat_map(|j| &j.crg));
-                records.filter_map(|r| files.index(r).map(|k| (r.clone(), k))).collect()
+                records.filter_map(|r| files.index(r).map(|k| (r.clone(), k))).collect::<Vec<_>>()
             })
-            .collect();
-        Ok(Surface { map, index, files, layers })
+            .collect::<Vec<_>>();
+        let patches = map.roads.iter().zip(&layers).map(|(road, layers)| Patches::new(road, layers)).collect();
+        Ok(Surface { map, index, files, layers, patches })
     }
 
     /// The map.
@@ -122,46 +124,43 @@ impl Surface {
 
     /// Where (x, y) lies on the map, searched through the index: the road whose lane
     /// holds it (a driving lane's before a lane of type `none`, then the first road in
-    /// the file), with the anchor its search ended on.
-    fn locate(&self, x: f64, y: f64) -> Option<(Spot<'_>, Station, Option<Anchor>)> {
-        let mut best: Option<(bool, Spot<'_>, Station, Option<Anchor>)> = None;
+    /// the file), with the station and the anchor its search ended on.
+    fn locate(&self, x: f64, y: f64) -> Option<(Spot, Footing, Option<Anchor>)> {
+        let mut best: Option<(Spot, Footing, Option<Anchor>)> = None;
         for (i, s0, s1) in self.index.candidates(x, y) {
             let road = &self.map.roads[i];
             let mut anchor = None;
-            let Some(p) = road.project_from(x, y, &mut anchor, None, 0.5 * (s0 + s1), (s0 - 1.0, s1 + 1.0)) else {
-                continue;
-            };
-            let Some(lane) = road.lane_place(p.s, p.t) else { continue };
-            let real = lane.0.lane.kind != "none";
+            let Some(mut at) = road.footing(0.5 * (s0 + s1), &mut anchor) else { continue };
+            let Some((s, ground)) = road.foot(x, y, &mut anchor, &mut at, (s0 - 1.0, s1 + 1.0)) else { continue };
+            let mut patch = usize::MAX;
+            let Some(spot) = self.place(i, s, ground, &mut patch) else { continue };
             let better = match &best {
                 None => true,
-                Some((was_real, was, ..)) => (real && !was_real) || (real == *was_real && i < was.pos.road),
+                Some((was, ..)) => (spot.real && !was.real) || (spot.real == was.real && i < was.pos.road),
             };
             if better {
-                let spot = Spot { pos: RoadPos { road: i, s: p.s, t: p.t }, roll: p.roll, lane: Some(lane) };
-                best = Some((real, spot, p.station, anchor));
+                best = Some((spot, at, anchor));
             }
         }
-        best.map(|(_, spot, station, anchor)| (spot, station, anchor))
+        best
     }
 
     /// Where (x, y) lies on the map: first on the road the wheel of `track` was on, near
     /// where it was, else through the index; `None` off every road.
-    fn find(&self, x: f64, y: f64, track: &mut Track) -> Option<Spot<'_>> {
-        if let Some((last, station)) = track.last {
-            let road = &self.map.roads[last.road];
-            let (lo, hi) = (last.s - 10.0, last.s + 10.0);
-            if let Some(p) = road.project_from(x, y, &mut track.anchor, Some((last.s, station)), last.s, (lo, hi)) {
-                if let Some(lane) = road.lane_place(p.s, p.t).filter(|(l, _)| l.lane.kind != "none") {
-                    let pos = RoadPos { road: last.road, s: p.s, t: p.t };
-                    track.last = Some((pos, p.station));
-                    return Some(Spot { pos, roll: p.roll, lane: Some(lane) });
+    #[inline(always)]
+    fn find(&self, x: f64, y: f64, track: &mut Track) -> Option<Spot> {
+        if let Some((i, at)) = &mut track.last {
+            let road = &self.map.roads[*i];
+            let range = (at.s - 10.0, at.s + 10.0);
+            if let Some((s, ground)) = road.foot(x, y, &mut track.anchor, at, range) {
+                if let Some(spot) = self.place(*i, s, ground, &mut track.patch).filter(|spot| spot.real) {
+                    return Some(spot);
                 }
             }
         }
         match self.locate(x, y) {
-            Some((spot, station, anchor)) => {
-                *track = Track { last: Some((spot.pos, station)), anchor };
+            Some((spot, at, anchor)) => {
+                *track = Track { last: Some((spot.pos.road, at)), anchor, patch: usize::MAX };
                 Some(spot)
             }
             None => {
@@ -171,27 +170,106 @@ impl Surface {
         }
     }
 
+    /// The place on road `road` (index) at s whose surface lies over the point `ground`
+    /// from the reference line (on the ground, across it); `None` outside its lanes.
+    /// `patch` is the index of the road's patch tried first, and becomes the one used.
+    #[inline(always)]
+    fn place(&self, road: usize, s: f64, ground: f64, patch: &mut usize) -> Option<Spot> {
+        let r = &self.map.roads[road];
+        let spot = match self.patches[road].find(s, *patch) {
+            Some(i) => {
+                *patch = i;
+                let p = self.patches[road].get(i);
+                match p.tilt {
+                    Some(tilt) if p.level => {
+                        let t = if tilt.roll == 0.0 { ground } else { ground * tilt.inverse_cos };
+                        self.patched_spot(road, i, s, t, tilt.sin_cos)
+                    }
+                    _ => {
+                        let roll = p.superelevation.value(s - p.superelevation.s);
+                        let sin_cos = trig::sin_cos(roll);
+                        let t = r.across(s, ground, roll, sin_cos, p.level);
+                        self.patched_spot(road, i, s, t, sin_cos)
+                    }
+                }
+            }
+            None => {
+                let roll = r.superelevation.at(s);
+                let sin_cos = trig::sin_cos(roll);
+                let level = r.shape.is_empty() && !r.lanes.section_at(s).is_some_and(|(l, _)| l.has_heights());
+                let t = r.across(s, ground, roll, sin_cos, level);
+                self.spot_from_road(road, s, t, sin_cos)
+            }
+        };
+        spot.lane.is_some().then_some(spot)
+    }
+
+    /// The spot at (s, t) of road `road` (index) with the records of its patch `patch`
+    /// (which serves s), the superelevation's sine and cosine `roll`.
+    #[inline(always)]
+    fn patched_spot(&self, road: usize, patch: usize, s: f64, t: f64, roll: (f64, f64)) -> Spot {
+        let patches = &self.patches[road];
+        let p = patches.get(patch);
+        let lane = patches.lane_at(p, s, t);
+        let shape = if p.level { 0.0 } else { self.map.roads[road].shape_height(s, t) };
+        Spot {
+            pos: RoadPos { road, s, t },
+            roll,
+            lane: lane.map(|(l, ..)| l.id),
+            real: lane.is_some_and(|(l, ..)| l.real),
+            elevation: p.elevation.value(s - p.elevation.s),
+            above: shape + lane.map_or(0.0, |(l, inner, outer)| height_across(l.heights, inner, outer, t)),
+            friction: lane.map_or(f64::NAN, |(l, ..)| l.friction),
+            crg: p.crg,
+        }
+    }
+
+    /// The spot at (s, t) of road `road` (index), from the road's records (where no patch
+    /// serves s), the superelevation's sine and cosine `roll`.
+    fn spot_from_road(&self, road: usize, s: f64, t: f64, roll: (f64, f64)) -> Spot {
+        let r = &self.map.roads[road];
+        let lane = r.lane_place(s, t);
+        let layers = &self.layers[road];
+        Spot {
+            pos: RoadPos { road, s, t },
+            roll,
+            lane: lane.map(|(l, _)| l.lane.id),
+            real: lane.is_some_and(|(l, _)| l.lane.kind != "none"),
+            elevation: r.elevation.at(s),
+            above: r.shape_height(s, t) + lane.map_or(0.0, |(l, ds)| span_height(&l, ds, t)),
+            friction: lane.and_then(|(l, ds)| l.lane.friction_at(ds)).unwrap_or(f64::NAN),
+            crg: [layer_at(layers, CrgPurpose::Elevation, s), layer_at(layers, CrgPurpose::Friction, s)],
+        }
+    }
+
+    /// The spot at (s, t) of road `road` (index), lane or not.
+    fn spot_st(&self, road: usize, s: f64, t: f64) -> Spot {
+        let roll = trig::sin_cos(self.map.roads[road].superelevation.at(s));
+        match self.patches[road].find(s, usize::MAX) {
+            Some(i) => self.patched_spot(road, i, s, t, roll),
+            None => self.spot_from_road(road, s, t, roll),
+        }
+    }
+
     /// The ground at a place of the map, (x, y) its world point.
-    fn ground_at(&self, spot: Spot<'_>, points: &mut CrgPoints, x: f64, y: f64) -> Ground {
-        let Spot { pos, roll: (sr, cr), lane } = spot;
+    #[inline(always)]
+    fn ground_at(&self, spot: Spot, points: &mut CrgPoints, x: f64, y: f64) -> Ground {
+        let Spot { pos, roll: (sr, cr), .. } = spot;
         let road = &self.map.roads[pos.road];
         let (s, t) = (pos.s, pos.t);
-        let lane_height = lane.map_or(0.0, |(l, ds)| span_height(&l, ds, t));
-        let height = road.shape_height(s, t) + lane_height;
         let mut ground = Ground {
             road: pos.road,
-            lane: lane.map_or(0, |(l, _)| l.lane.id),
+            lane: spot.lane.unwrap_or(0),
             s,
             t,
-            z: road.elevation.at(s) + t * sr + height * cr,
-            friction: lane.and_then(|(l, ds)| l.lane.friction_at(ds)).unwrap_or(f64::NAN),
+            z: spot.elevation + t * sr + spot.above * cr,
+            friction: spot.friction,
         };
         let layers = &self.layers[pos.road];
-        for purpose in [CrgPurpose::Elevation, CrgPurpose::Friction] {
-            let last = layers.iter().rev().find(|(r, _)| r.purpose == purpose && r.s_start <= s && s <= r.s_end);
-            let Some((record, k)) = last else { continue };
+        for layer in spot.crg {
+            let Some((record, k)) = layer.map(|i| &layers[i]) else { continue };
             let value = crg::value(record, *k, &self.files, points, road, (x, y, s, t));
-            match purpose {
+            match record.purpose {
                 CrgPurpose::Friction => ground.friction = value,
                 CrgPurpose::Elevation => {
                     let own = if record.mode == crate::map::CrgMode::Attached { ground.z } else { 0.0 };
@@ -203,21 +281,36 @@ impl Surface {
     }
 }
 
-/// A world point's place on a road, with what its ground needs: the superelevation's sine
-/// and cosine, the lane and the distance into its section.
+/// A world point's place on a road and what its ground needs there: the superelevation's
+/// sine and cosine, the lane, the reference line's height, the surface's height above the
+/// cross section, the lane material's friction and the CRG layers that hold.
 #[derive(Clone, Copy)]
-struct Spot<'a> {
+struct Spot {
     pos: RoadPos,
     roll: (f64, f64),
-    lane: Option<(LaneSpan<'a>, f64)>,
+    /// The lane's id; `None` outside the lanes.
+    lane: Option<i32>,
+    /// Whether the lane is of a type other than `none`.
+    real: bool,
+    elevation: f64,
+    above: f64,
+    friction: f64,
+    /// The indices in the road's layers of the CRG records that hold: elevation, friction.
+    crg: [Option<usize>; 2],
 }
 
-/// Where a wheel was: its place and the reference line's station there, and the anchor
-/// its searches start from.
-#[derive(Default)]
+/// Where a wheel was: its road (index) and footing there, the anchor its searches start
+/// from and the patch of its road it was on.
 struct Track {
-    last: Option<(RoadPos, Station)>,
+    last: Option<(usize, Footing)>,
     anchor: Option<Anchor>,
+    patch: usize,
+}
+
+impl Default for Track {
+    fn default() -> Track {
+        Track { last: None, anchor: None, patch: usize::MAX }
+    }
 }
 
 /// One wheel's view of a [`Surface`]: where it was last, its contact points on the CRG
@@ -256,8 +349,7 @@ impl Probe {
         if !(x.is_finite() && y.is_finite()) {
             return None;
         }
-        let spot =
-            Spot { pos: RoadPos { road, s, t }, roll: trig::sin_cos(r.superelevation.at(s)), lane: r.lane_place(s, t) };
+        let spot = surface.spot_st(road, s, t);
         Some((x, y, surface.ground_at(spot, &mut self.points, x, y)))
     }
 
@@ -270,5 +362,56 @@ impl Probe {
         let (gx, gy) = ((east - west) / (2.0 * E), (north - south) / (2.0 * E));
         let n = (gx * gx + gy * gy + 1.0).sqrt();
         Some([-gx / n, -gy / n, 1.0 / n])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every shared map, every road: at s all along it (cuts included) and t across its
+    /// lanes, the spot a patch gives is the spot the road's own records give, to the bit.
+    #[test]
+    fn patches_give_what_the_roads_records_give() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/opendrive");
+        let (mut patched, mut near_cuts) = (0usize, 0usize);
+        for group in ["carla", "esmini"] {
+            for entry in std::fs::read_dir(dir.join(group)).unwrap() {
+                let path = entry.unwrap().path();
+                if path.extension().is_none_or(|e| e != "xodr") {
+                    continue;
+                }
+                let surface = Surface::load(&path).unwrap();
+                for (i, road) in surface.map.roads.iter().enumerate() {
+                    let cuts = road.lanes.sections.iter().map(|l| l.s).chain(road.elevation.starts());
+                    let mut stations: Vec<(f64, bool)> =
+                        (1..40).map(|k| (road.length * k as f64 / 40.0, true)).collect();
+                    stations.extend(cuts.flat_map(|c| [c - 1e-6, c + 1e-6, c + 0.01]).map(|s| (s, false)));
+                    for (s, even) in stations {
+                        let Some(p) = surface.patches[i].find(s, usize::MAX) else {
+                            near_cuts += usize::from(even);
+                            continue;
+                        };
+                        let roll = trig::sin_cos(road.superelevation.at(s));
+                        for k in -24..=24 {
+                            let t = k as f64 * 0.75 + 0.013;
+                            let (a, b) =
+                                (surface.patched_spot(i, p, s, t, roll), surface.spot_from_road(i, s, t, roll));
+                            let same = a.lane == b.lane
+                                && a.real == b.real
+                                && a.elevation.to_bits() == b.elevation.to_bits()
+                                && a.above.to_bits() == b.above.to_bits()
+                                && a.friction.to_bits() == b.friction.to_bits()
+                                && a.crg == b.crg;
+                            assert!(same, "{} road {} s {s} t {t}", path.display(), road.id);
+                            patched += 1;
+                        }
+                    }
+                }
+            }
+        }
+        // Points within the margin of a cut are the road's own to answer: hardly any of the
+        // evenly spaced stations.
+        assert!(patched > 1_000_000 && near_cuts * 49 * 1000 < patched, "{patched} compared, {near_cuts} near cuts");
     }
 }

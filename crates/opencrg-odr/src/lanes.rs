@@ -57,16 +57,14 @@ impl Lane {
         holding(&self.width, ds, |r| r.s).map_or(0.0, |r| r.value(ds - r.s))
     }
 
-    /// t of its outer border `ds` after its section's start, its inner border at `inner`
-    /// and t growing outwards as `sign`: its border record's, else the inner border and
-    /// its width.
-    fn outer(&self, ds: f64, inner: f64, sign: f64) -> f64 {
+    /// How its outer border is given `ds` after its section's start.
+    pub(crate) fn edge(&self, ds: f64) -> Edge {
         if self.width.is_empty() {
             if let Some(b) = holding(&self.border, ds, |r| r.s) {
-                return b.value(ds - b.s);
+                return Edge::Border(*b);
             }
         }
-        inner + sign * self.width_at(ds)
+        holding(&self.width, ds, |r| r.s).map_or(Edge::Inner, |w| Edge::Width(*w))
     }
 
     /// Its heights (inner, outer) `ds` after its section's start.
@@ -78,6 +76,62 @@ impl Lane {
     pub fn friction_at(&self, ds: f64) -> Option<f64> {
         holding(&self.materials, ds, |m| m.s_offset).and_then(|m| m.friction)
     }
+}
+
+/// How a lane's outer border is given where one record of its widths or borders holds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Edge {
+    /// Its width from the inner border outwards.
+    Width(Cubic),
+    /// Its border's t.
+    Border(Cubic),
+    /// No record: the outer border is the inner one.
+    Inner,
+}
+
+impl Edge {
+    /// t of the outer border `ds` after the section's start, the inner border at `inner`
+    /// and t growing outwards as `sign`.
+    #[inline(always)]
+    pub(crate) fn outer(&self, ds: f64, inner: f64, sign: f64) -> f64 {
+        match self {
+            Edge::Border(b) => b.value(ds - b.s),
+            Edge::Width(w) => inner + sign * w.value(ds - w.s),
+            Edge::Inner => inner + sign * 0.0,
+        }
+    }
+}
+
+/// Which lane holds t among lanes whose outer borders `outer(left, i, inner)` gives
+/// (left or right side, index outwards, its inner border), the centre lane at `offset`: the
+/// lane whose borders enclose t (on a border, the outer lane), as (left, index, inner,
+/// outer); `None` beyond the outermost lanes or on the centre line of a side without lanes.
+#[inline(always)]
+pub(crate) fn find_lane(
+    t: f64,
+    offset: f64,
+    (left, right): (usize, usize),
+    mut outer: impl FnMut(bool, usize, f64) -> f64,
+) -> Option<(bool, usize, f64, f64)> {
+    let mut inner = offset;
+    if t >= offset {
+        for i in 0..left {
+            let o = outer(true, i, inner);
+            if t < o || (t == o && t == inner) {
+                return Some((true, i, inner, o));
+            }
+            inner = o;
+        }
+    } else {
+        for i in 0..right {
+            let o = outer(false, i, inner);
+            if t > o && t <= inner || (t == o && t == inner) {
+                return Some((false, i, inner, o));
+            }
+            inner = o;
+        }
+    }
+    None
 }
 
 /// A lane section: from `s` on, its lanes to the left (ids 1, 2, ...) and to the right
@@ -111,7 +165,7 @@ impl LaneSection {
         let sign = if left { 1.0 } else { -1.0 };
         let mut inner = offset;
         lanes.iter().map(move |lane| {
-            let outer = lane.outer(ds, inner, sign);
+            let outer = lane.edge(ds).outer(ds, inner, sign);
             let span = LaneSpan { lane, inner, outer };
             inner = outer;
             span
@@ -127,25 +181,12 @@ impl LaneSection {
     /// borders enclose t (on a border, the outer lane); `None` beyond the outermost lanes
     /// or on the centre line of a section without lanes there.
     pub fn lane_at(&self, ds: f64, t: f64, offset: f64) -> Option<LaneSpan<'_>> {
-        let mut inner = offset;
-        if t >= offset {
-            for lane in &self.left {
-                let outer = lane.outer(ds, inner, 1.0);
-                if t < outer || (t == outer && t == inner) {
-                    return Some(LaneSpan { lane, inner, outer });
-                }
-                inner = outer;
-            }
-        } else {
-            for lane in &self.right {
-                let outer = lane.outer(ds, inner, -1.0);
-                if t > outer && t <= inner || (t == outer && t == inner) {
-                    return Some(LaneSpan { lane, inner, outer });
-                }
-                inner = outer;
-            }
-        }
-        None
+        let side = |left: bool| if left { (&self.left, 1.0) } else { (&self.right, -1.0) };
+        let (left, i, inner, outer) = find_lane(t, offset, (self.left.len(), self.right.len()), |left, i, inner| {
+            let (lanes, sign) = side(left);
+            lanes[i].edge(ds).outer(ds, inner, sign)
+        })?;
+        Some(LaneSpan { lane: &side(left).0[i], inner, outer })
     }
 }
 

@@ -26,6 +26,7 @@ mod lanes;
 mod locate;
 mod map;
 mod mesh;
+mod patch;
 mod profile;
 mod quadrature;
 mod read;

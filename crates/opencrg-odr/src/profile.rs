@@ -59,6 +59,17 @@ impl Profile {
         self.records.get(after.saturating_sub(1))
     }
 
+    /// The record holding at `s` as a cubic of its own: a record's value is the profile's
+    /// there; the zero polynomial where there is no record.
+    pub(crate) fn cubic_at(&self, s: f64) -> Cubic {
+        self.record(s).copied().unwrap_or(Cubic { s: 0.0, a: 0.0, b: 0.0, c: 0.0, d: 0.0 })
+    }
+
+    /// Where its records start.
+    pub(crate) fn starts(&self) -> impl Iterator<Item = f64> + '_ {
+        self.records.iter().map(|r| r.s)
+    }
+
     /// The value at `s`.
     pub fn at(&self, s: f64) -> f64 {
         self.record(s).map_or(0.0, |r| r.value(s - r.s))

@@ -113,11 +113,17 @@ impl Road {
 
 /// The height of the lane `span` at t, `ds` after its section's start.
 pub(crate) fn span_height(span: &LaneSpan, ds: f64, t: f64) -> f64 {
-    let (inner, outer) = span.lane.height_at(ds);
-    if inner == outer || span.outer == span.inner {
-        return inner;
+    height_across(span.lane.height_at(ds), span.inner, span.outer, t)
+}
+
+/// The height at t of a lane between `inner` and `outer` (t) whose heights there are
+/// `heights`: linear between its borders.
+#[inline]
+pub(crate) fn height_across((h_inner, h_outer): (f64, f64), inner: f64, outer: f64, t: f64) -> f64 {
+    if h_inner == h_outer || outer == inner {
+        return h_inner;
     }
-    inner + (outer - inner) * (t - span.inner) / (span.outer - span.inner)
+    h_inner + (h_outer - h_inner) * (t - inner) / (outer - inner)
 }
 
 impl Road {

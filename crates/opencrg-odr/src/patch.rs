@@ -1,0 +1,195 @@
+//! A road cut where any of its records along s starts or ends (elevation, superelevation,
+//! lane offset, lane sections, the lanes' widths, borders, heights and materials, the CRG
+//! records laid on it): between two cuts the same records hold, so a wheel moving along
+//! the road evaluates them without searching. Each patch keeps those records, found once
+//! when the map is made ready; the answers are the same as the road's own lookups give
+//! (tested below), which serve the points within rounding of a cut.
+
+use crate::lanes::{find_lane, Edge};
+use crate::map::{CrgPurpose, CrgRecord, Road};
+use crate::profile::Cubic;
+use crate::trig;
+use std::ops::Range;
+
+/// A lane as one patch sees it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct PatchLane {
+    /// Its id.
+    pub id: i32,
+    /// Whether it is a lane of a type other than `none`.
+    pub real: bool,
+    /// How its outer border is given.
+    pub edge: Edge,
+    /// Its heights at the inner and the outer border.
+    pub heights: (f64, f64),
+    /// Its material's friction; NaN where none gives one.
+    pub friction: f64,
+}
+
+/// A constant superelevation: its angle, sine and cosine, and the cosine's reciprocal.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Tilt {
+    pub roll: f64,
+    pub sin_cos: (f64, f64),
+    pub inverse_cos: f64,
+}
+
+/// The records that hold on a road between two cuts.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Patch {
+    /// s beyond which the patch serves, its start with a margin for rounding.
+    lo: f64,
+    /// s before which the patch serves, its end with a margin for rounding.
+    hi: f64,
+    /// The elevation's record.
+    pub elevation: Cubic,
+    /// The superelevation's record.
+    pub superelevation: Cubic,
+    /// Where the superelevation is constant over the patch: its value, sine and cosine,
+    /// and the cosine's reciprocal.
+    pub tilt: Option<Tilt>,
+    /// The lane offset's record.
+    pub offset: Cubic,
+    /// Where the lane section starts.
+    pub section_s: f64,
+    /// Whether the surface lies on the cross section (no lateral shape, no lane heights).
+    pub level: bool,
+    /// The lanes left of the centre, outwards, in [`Patches::lanes`].
+    left: Range<usize>,
+    /// The lanes right of the centre, outwards.
+    right: Range<usize>,
+    /// The CRG layers (indices in the road's list) that hold: elevation, friction.
+    pub crg: [Option<usize>; 2],
+}
+
+/// A road's patches in order of s, and their lanes.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub(crate) struct Patches {
+    patches: Vec<Patch>,
+    lanes: Vec<PatchLane>,
+}
+
+/// The margin kept from each cut: far above the rounding of s less a section's start, far
+/// below any distance a wheel can tell.
+fn margin(s: f64) -> f64 {
+    if s.is_finite() {
+        1e-9 * (1.0 + s.abs())
+    } else {
+        0.0
+    }
+}
+
+/// The last of `layers` with `purpose` that holds at s (the last record wins).
+pub(crate) fn layer_at(layers: &[(CrgRecord, usize)], purpose: CrgPurpose, s: f64) -> Option<usize> {
+    layers.iter().rposition(|(r, _)| r.purpose == purpose && r.s_start <= s && s <= r.s_end)
+}
+
+impl Patches {
+    /// The patches of `road`, `layers` the CRG records that apply to it.
+    pub fn new(road: &Road, layers: &[(CrgRecord, usize)]) -> Patches {
+        let lanes = &road.lanes;
+        let mut cuts: Vec<f64> = road.elevation.starts().chain(road.superelevation.starts()).collect();
+        cuts.extend(lanes.offset.starts());
+        for section in &lanes.sections {
+            cuts.push(section.s);
+            for lane in section.left.iter().chain(&section.right) {
+                let offsets = lane.width.iter().chain(&lane.border).map(|r| r.s);
+                let offsets = offsets.chain(lane.heights.iter().map(|h| h.s_offset));
+                cuts.extend(offsets.chain(lane.materials.iter().map(|m| m.s_offset)).map(|ds| section.s + ds));
+            }
+        }
+        cuts.extend(layers.iter().flat_map(|(r, _)| [r.s_start, r.s_end]));
+        cuts.retain(|s| s.is_finite());
+        cuts.sort_by(f64::total_cmp);
+        cuts.dedup();
+        let mut out = Patches::default();
+        let bounds = std::iter::once(f64::NEG_INFINITY).chain(cuts.iter().copied());
+        for (start, end) in bounds.zip(cuts.iter().copied().chain([f64::INFINITY])) {
+            let (lo, hi) = (start + margin(start), end - margin(end));
+            if !(lo < hi) {
+                continue;
+            }
+            // Where every record holds as it does all over the patch.
+            let at = match (start.is_finite(), end.is_finite()) {
+                (true, true) => 0.5 * (start + end),
+                (true, false) => start + 1.0,
+                (false, true) => end - 1.0,
+                (false, false) => 0.0,
+            };
+            out.push(road, layers, lo, hi, at);
+        }
+        out
+    }
+
+    /// Adds the patch between `lo` and `hi`, its records those holding at `at`.
+    fn push(&mut self, road: &Road, layers: &[(CrgRecord, usize)], lo: f64, hi: f64, at: f64) {
+        let section = road.lanes.section_at(at);
+        let mut side = |lanes: &[crate::lanes::Lane], ds: f64| {
+            let first = self.lanes.len();
+            self.lanes.extend(lanes.iter().map(|lane| PatchLane {
+                id: lane.id,
+                real: lane.kind != "none",
+                edge: lane.edge(ds),
+                heights: lane.height_at(ds),
+                friction: lane.friction_at(ds).unwrap_or(f64::NAN),
+            }));
+            first..self.lanes.len()
+        };
+        let (left, right, section_s) = match section {
+            Some((sec, ds)) => (side(&sec.left, ds), side(&sec.right, ds), sec.s),
+            None => (0..0, 0..0, 0.0),
+        };
+        let superelevation = road.superelevation.cubic_at(at);
+        let tilt = (superelevation.b == 0.0 && superelevation.c == 0.0 && superelevation.d == 0.0).then(|| {
+            let roll = superelevation.value(at - superelevation.s);
+            let sin_cos = trig::sin_cos(roll);
+            Tilt { roll, sin_cos, inverse_cos: 1.0 / sin_cos.1 }
+        });
+        self.patches.push(Patch {
+            lo,
+            hi,
+            elevation: road.elevation.cubic_at(at),
+            superelevation,
+            tilt,
+            offset: road.lanes.offset.cubic_at(at),
+            section_s,
+            level: road.shape.is_empty() && !section.is_some_and(|(sec, _)| sec.has_heights()),
+            left,
+            right,
+            crg: [layer_at(layers, CrgPurpose::Elevation, at), layer_at(layers, CrgPurpose::Friction, at)],
+        });
+    }
+
+    /// The patch serving `s`, trying `hint` (a patch's index) first; `None` within the
+    /// margin of a cut.
+    #[inline(always)]
+    pub fn find(&self, s: f64, hint: usize) -> Option<usize> {
+        if let Some(p) = self.patches.get(hint) {
+            if p.lo < s && s < p.hi {
+                return Some(hint);
+            }
+        }
+        let i = self.patches.partition_point(|p| p.hi <= s);
+        self.patches.get(i).filter(|p| p.lo < s && s < p.hi).map(|_| i)
+    }
+
+    /// The patch of index `i`.
+    #[inline(always)]
+    pub fn get(&self, i: usize) -> &Patch {
+        &self.patches[i]
+    }
+
+    /// The lane of patch `patch` at (s, t), with its inner and outer borders' t.
+    #[inline(always)]
+    pub fn lane_at(&self, patch: &Patch, s: f64, t: f64) -> Option<(&PatchLane, f64, f64)> {
+        let ds = s - patch.section_s;
+        let offset = patch.offset.value(s - patch.offset.s);
+        let (left, right) = (&self.lanes[patch.left.clone()], &self.lanes[patch.right.clone()]);
+        let side = |left_side: bool| if left_side { (left, 1.0) } else { (right, -1.0) };
+        let (on_left, i, inner, outer) = find_lane(t, offset, (left.len(), right.len()), |l, i, inner| {
+            let (lanes, sign) = side(l);
+            lanes[i].edge.outer(ds, inner, sign)
+        })?;
+        Some((&side(on_left).0[i], inner, outer))
+    }
+}
