@@ -266,16 +266,15 @@ impl Surface {
             friction: spot.friction,
         };
         let layers = &self.layers[pos.road];
-        for layer in spot.crg {
-            let Some((record, k)) = layer.map(|i| &layers[i]) else { continue };
+        if let [Some(elevation), _] = spot.crg {
+            let (record, k) = &layers[elevation];
             let value = crg::value(record, *k, &self.files, points, road, (x, y, s, t));
-            match record.purpose {
-                CrgPurpose::Friction => ground.friction = value,
-                CrgPurpose::Elevation => {
-                    let own = if record.mode == crate::map::CrgMode::Attached { ground.z } else { 0.0 };
-                    ground.z = value * record.z_scale + record.z_offset + own;
-                }
-            }
+            let own = if record.mode == crate::map::CrgMode::Attached { ground.z } else { 0.0 };
+            ground.z = value * record.z_scale + record.z_offset + own;
+        }
+        if let [_, Some(friction)] = spot.crg {
+            let (record, k) = &layers[friction];
+            ground.friction = crg::value(record, *k, &self.files, points, road, (x, y, s, t));
         }
         ground
     }
