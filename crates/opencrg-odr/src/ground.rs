@@ -125,6 +125,7 @@ impl Surface {
     /// Where (x, y) lies on the map, searched through the index: the road whose lane
     /// holds it (a driving lane's before a lane of type `none`, then the first road in
     /// the file), with the station and the anchor its search ended on.
+    #[inline(never)]
     fn locate(&self, x: f64, y: f64) -> Option<(Spot, Footing, Option<Anchor>)> {
         let mut best: Option<(Spot, Footing, Option<Anchor>)> = None;
         for (i, s0, s1) in self.index.candidates(x, y) {
@@ -193,15 +194,21 @@ impl Surface {
                     }
                 }
             }
-            None => {
-                let roll = r.superelevation.at(s);
-                let sin_cos = trig::sin_cos(roll);
-                let level = r.shape.is_empty() && !r.lanes.section_at(s).is_some_and(|(l, _)| l.has_heights());
-                let t = r.across(s, ground, roll, sin_cos, level);
-                self.spot_from_road(road, s, t, sin_cos)
-            }
+            None => self.place_from_road(road, s, ground),
         };
         spot.lane.is_some().then_some(spot)
+    }
+
+    /// [`Surface::place`] from the road's own records, where no patch serves s.
+    #[cold]
+    #[inline(never)]
+    fn place_from_road(&self, road: usize, s: f64, ground: f64) -> Spot {
+        let r = &self.map.roads[road];
+        let roll = r.superelevation.at(s);
+        let sin_cos = trig::sin_cos(roll);
+        let level = r.shape.is_empty() && !r.lanes.section_at(s).is_some_and(|(l, _)| l.has_heights());
+        let t = r.across(s, ground, roll, sin_cos, level);
+        self.spot_from_road(road, s, t, sin_cos)
     }
 
     /// The spot at (s, t) of road `road` (index) with the records of its patch `patch`

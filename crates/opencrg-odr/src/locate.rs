@@ -320,15 +320,24 @@ impl Road {
     /// t cos r - h(s, t) sin r from the line on the ground.
     #[inline(always)]
     pub(crate) fn across(&self, s: f64, ground: f64, roll: f64, (sr, cr): (f64, f64), level: bool) -> f64 {
-        let mut t = ground / cr;
+        let t = ground / cr;
         if roll != 0.0 && !level {
-            for _ in 0..4 {
-                let h = self.height_above_section(s, t);
-                if h == 0.0 {
-                    break;
-                }
-                t = (ground + h * sr) / cr;
+            return self.across_lifted(s, ground, (sr, cr), t);
+        }
+        t
+    }
+
+    /// [`Road::across`] where the surface lies above the tilted cross section: the height
+    /// there moves the point across, by fixed-point rounds from `t`.
+    #[cold]
+    #[inline(never)]
+    fn across_lifted(&self, s: f64, ground: f64, (sr, cr): (f64, f64), mut t: f64) -> f64 {
+        for _ in 0..4 {
+            let h = self.height_above_section(s, t);
+            if h == 0.0 {
+                break;
             }
+            t = (ground + h * sr) / cr;
         }
         t
     }
