@@ -181,18 +181,12 @@ impl Surface {
             Some(i) => {
                 *patch = i;
                 let p = self.patches[road].get(i);
-                match p.tilt {
-                    Some(tilt) if p.level => {
-                        let t = if tilt.roll == 0.0 { ground } else { ground * tilt.inverse_cos };
-                        self.patched_spot(road, i, s, t, tilt.sin_cos)
-                    }
-                    _ => {
-                        let roll = p.superelevation.value(s - p.superelevation.s);
-                        let sin_cos = trig::sin_cos(roll);
-                        let t = r.across(s, ground, roll, sin_cos, p.level);
-                        self.patched_spot(road, i, s, t, sin_cos)
-                    }
-                }
+                let (roll, sin_cos) = p.tilt.unwrap_or_else(|| {
+                    let roll = p.superelevation.value(s - p.superelevation.s);
+                    (roll, trig::sin_cos(roll))
+                });
+                let t = r.across(s, ground, roll, sin_cos, p.level);
+                self.patched_spot(road, i, s, t, sin_cos)
             }
             None => self.place_from_road(road, s, ground),
         };
@@ -206,8 +200,7 @@ impl Surface {
         let r = &self.map.roads[road];
         let roll = r.superelevation.at(s);
         let sin_cos = trig::sin_cos(roll);
-        let level = r.shape.is_empty() && !r.lanes.section_at(s).is_some_and(|(l, _)| l.has_heights());
-        let t = r.across(s, ground, roll, sin_cos, level);
+        let t = r.across(s, ground, roll, sin_cos, r.level_at(s));
         self.spot_from_road(road, s, t, sin_cos)
     }
 

@@ -97,7 +97,7 @@ impl Edge {
         match self {
             Edge::Border(b) => b.value(ds - b.s),
             Edge::Width(w) => inner + sign * w.value(ds - w.s),
-            Edge::Inner => inner + sign * 0.0,
+            Edge::Inner => inner,
         }
     }
 }

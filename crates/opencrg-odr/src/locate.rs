@@ -196,11 +196,12 @@ impl Road {
     /// cross section the surface point over it lies; `None` where the search leaves the
     /// range or the road.
     pub fn project(&self, x: f64, y: f64, guess: f64, lo: f64, hi: f64) -> Option<(f64, f64)> {
-        let mut anchor = None;
-        if !(lo.max(0.0) <= hi.min(self.length)) {
+        let (lo, hi) = (lo.max(0.0), hi.min(self.length));
+        if !(lo <= hi) {
             return None;
         }
-        let mut at = self.footing(guess.clamp(lo.max(0.0), hi.min(self.length)), &mut anchor)?;
+        let mut anchor = None;
+        let mut at = self.footing(guess.clamp(lo, hi), &mut anchor)?;
         let (s, ground) = self.foot(x, y, &mut anchor, &mut at, (lo, hi))?;
         let roll = self.superelevation.at(s);
         Some((s, self.across(s, ground, roll, trig::sin_cos(roll), self.level_at(s))))
@@ -343,7 +344,7 @@ impl Road {
     }
 
     /// Whether the surface lies on the cross section at s (no lateral shape, no lane heights).
-    fn level_at(&self, s: f64) -> bool {
+    pub(crate) fn level_at(&self, s: f64) -> bool {
         self.shape.is_empty() && !self.lanes.section_at(s).is_some_and(|(l, _)| l.has_heights())
     }
 }

@@ -26,14 +26,6 @@ pub(crate) struct PatchLane {
     pub friction: f64,
 }
 
-/// A constant superelevation: its angle, sine and cosine, and the cosine's reciprocal.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Tilt {
-    pub roll: f64,
-    pub sin_cos: (f64, f64),
-    pub inverse_cos: f64,
-}
-
 /// The records that hold on a road between two cuts.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Patch {
@@ -45,9 +37,9 @@ pub(crate) struct Patch {
     pub elevation: Cubic,
     /// The superelevation's record.
     pub superelevation: Cubic,
-    /// Where the superelevation is constant over the patch: its value, sine and cosine,
-    /// and the cosine's reciprocal.
-    pub tilt: Option<Tilt>,
+    /// Where the superelevation is constant over the patch: its value, and its sine and
+    /// cosine.
+    pub tilt: Option<(f64, (f64, f64))>,
     /// The lane offset's record.
     pub offset: Cubic,
     /// Where the lane section starts.
@@ -142,8 +134,7 @@ impl Patches {
         let superelevation = road.superelevation.cubic_at(at);
         let tilt = (superelevation.b == 0.0 && superelevation.c == 0.0 && superelevation.d == 0.0).then(|| {
             let roll = superelevation.value(at - superelevation.s);
-            let sin_cos = trig::sin_cos(roll);
-            Tilt { roll, sin_cos, inverse_cos: 1.0 / sin_cos.1 }
+            (roll, trig::sin_cos(roll))
         });
         self.patches.push(Patch {
             lo,
@@ -153,7 +144,7 @@ impl Patches {
             tilt,
             offset: road.lanes.offset.cubic_at(at),
             section_s,
-            level: road.shape.is_empty() && !section.is_some_and(|(sec, _)| sec.has_heights()),
+            level: road.level_at(at),
             left,
             right,
             crg: [layer_at(layers, CrgPurpose::Elevation, at), layer_at(layers, CrgPurpose::Friction, at)],
