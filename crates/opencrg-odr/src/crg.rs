@@ -101,50 +101,75 @@ impl CrgPoints {
     }
 }
 
-/// The record's CRG value at the world point (x, y), which lies at (s, t) of `road`:
-/// the height or friction before `zScale`, `zOffset` and the road's own height; NaN
-/// where the CRG has none (a hole in its grid, border mode none).
-pub(crate) fn value(
-    record: &CrgRecord,
-    k: usize,
-    files: &CrgFiles,
-    points: &mut CrgPoints,
-    road: &Road,
-    (x, y, s, t): (f64, f64, f64, f64),
-) -> f64 {
-    let found = match record.mode {
-        CrgMode::Attached | CrgMode::Attached0 => {
-            let (mut u, mut v) = (s - record.s_offset, t - record.t_offset);
-            if record.orientation == CrgOrientation::Opposite {
-                (u, v) = (-u, -v);
-            }
-            if record.mode == CrgMode::Attached {
-                points.grid(k).uv_to_z(u, v).map(|z| z - files.files[k].base)
-            } else {
-                points.whole(k).uv_to_z(u, v)
-            }
-        }
-        CrgMode::Genuine => {
-            let at = road.reference(record.s_offset);
-            let (sin, cos) = at.hdg.sin_cos();
-            let (x0, y0) = (at.x - record.t_offset * sin, at.y + record.t_offset * cos);
-            let line = files.files[k].whole.reference_line();
-            let a = at.hdg + record.h_offset - line.phi_first;
-            let (xc, yc) = turned(a, x - x0, y - y0);
-            points.whole(k).xy_to_z(xc + line.x_first, yc + line.y_first)
-        }
-        CrgMode::Global => {
-            let (xc, yc) = turned(record.h_offset, x - record.x_offset, y - record.y_offset);
-            points.whole(k).xy_to_z(xc, yc)
-        }
-    };
-    found.unwrap_or(f64::NAN)
+/// A CRG record laid on one road, with its file's index and where its u/v or x/y come
+/// from, worked out once for every query.
+#[derive(Debug, Clone)]
+pub(crate) struct Layer {
+    pub record: CrgRecord,
+    /// The index of its file in [`CrgFiles::files`].
+    pub file: usize,
+    lay: Lay,
 }
 
-/// R(a) [x, y]: a world vector in the frame turned by `a`.
-fn turned(a: f64, x: f64, y: f64) -> (f64, f64) {
-    let (sin, cos) = a.sin_cos();
-    (cos * x + sin * y, -sin * x + cos * y)
+/// How a world point or a road's s/t becomes a place in a CRG file.
+#[derive(Debug, Clone, Copy)]
+enum Lay {
+    /// The attached modes: u = sign (s - s0), v = sign (t - t0), on the file's grid alone
+    /// (less its level line's height `base`) or on the whole file.
+    Along { s0: f64, t0: f64, sign: f64, grid: bool, base: f64 },
+    /// Genuine and global: the file's x/y = R(a) (world - origin) + first, with the sine
+    /// and cosine of a.
+    Placed { origin: (f64, f64), sin_cos: (f64, f64), first: (f64, f64) },
+}
+
+impl Layer {
+    /// `record`, whose file is `files`' `file`, laid on `road`.
+    pub fn new(record: &CrgRecord, file: usize, files: &CrgFiles, road: &Road) -> Layer {
+        let sign = if record.orientation == CrgOrientation::Opposite { -1.0 } else { 1.0 };
+        let (s0, t0) = (record.s_offset, record.t_offset);
+        let lay = match record.mode {
+            CrgMode::Attached => Lay::Along { s0, t0, sign, grid: true, base: files.files[file].base },
+            CrgMode::Attached0 => Lay::Along { s0, t0, sign, grid: false, base: 0.0 },
+            CrgMode::Genuine => {
+                let at = road.reference(record.s_offset);
+                let (sin, cos) = at.hdg.sin_cos();
+                let line = files.files[file].whole.reference_line();
+                Lay::Placed {
+                    origin: (at.x - record.t_offset * sin, at.y + record.t_offset * cos),
+                    sin_cos: (at.hdg + record.h_offset - line.phi_first).sin_cos(),
+                    first: (line.x_first, line.y_first),
+                }
+            }
+            CrgMode::Global => Lay::Placed {
+                origin: (record.x_offset, record.y_offset),
+                sin_cos: record.h_offset.sin_cos(),
+                first: (0.0, 0.0),
+            },
+        };
+        Layer { record: record.clone(), file, lay }
+    }
+
+    /// The layer's CRG value at the world point (x, y), which lies at (s, t) of its road:
+    /// the height or friction before `zScale`, `zOffset` and the road's own height; NaN
+    /// where the CRG has none (a hole in its grid, border mode none).
+    #[inline(always)]
+    pub fn value(&self, points: &mut CrgPoints, (x, y, s, t): (f64, f64, f64, f64)) -> f64 {
+        let found = match self.lay {
+            Lay::Along { s0, t0, sign, grid, base } => {
+                let (u, v) = (sign * (s - s0), sign * (t - t0));
+                if grid {
+                    points.grid(self.file).uv_to_z(u, v).map(|z| z - base)
+                } else {
+                    points.whole(self.file).uv_to_z(u, v)
+                }
+            }
+            Lay::Placed { origin, sin_cos: (sin, cos), first } => {
+                let (dx, dy) = (x - origin.0, y - origin.1);
+                points.whole(self.file).xy_to_z(cos * dx + sin * dy + first.0, -sin * dx + cos * dy + first.1)
+            }
+        };
+        found.unwrap_or(f64::NAN)
+    }
 }
 
 /// The outline of the area a record lays its file on, in world x/y: along the road between

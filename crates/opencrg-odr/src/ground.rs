@@ -5,9 +5,9 @@
 //! where its wheel was, so that a wheel moving along a road is found again without the
 //! index, and its own contact points on the CRG files.
 
-use crate::crg::{self, CrgFiles, CrgPoints};
+use crate::crg::{self, CrgFiles, CrgPoints, Layer};
 use crate::locate::{Anchor, Footing, RoadIndex, RoadPos};
-use crate::map::{CrgPurpose, CrgRecord, Map, Road};
+use crate::map::{CrgMode, CrgPurpose, Map, Road};
 use crate::patch::{layer_at, Patches};
 use crate::surface::{height_across, span_height};
 use crate::trig;
@@ -20,9 +20,8 @@ pub struct Surface {
     map: Map,
     index: RoadIndex,
     files: CrgFiles,
-    /// Per road: the CRG records that apply to it (its own, then its junction's), with
-    /// the index of their file.
-    layers: Vec<Vec<(CrgRecord, usize)>>,
+    /// Per road: the CRG records that apply to it (its own, then its junction's), laid on it.
+    layers: Vec<Vec<Layer>>,
     /// Per road: its patches, the records holding between its cuts.
     patches: Vec<Patches>,
 }
@@ -62,7 +61,7 @@ impl Surface {
             .map(|road| {
                 let junction = road.junction.as_ref().and_then(|j| map.junctions.iter().find(|x| &x.id == j));
                 let records = road.crg.iter().chain(junction.into_iter().flat_map(|j| &j.crg));
-                records.filter_map(|r| files.index(r).map(|k| (r.clone(), k))).collect::<Vec<_>>()
+                records.filter_map(|r| files.index(r).map(|k| Layer::new(r, k, &files, road))).collect::<Vec<_>>()
             })
             .collect::<Vec<_>>();
         let patches = map.roads.iter().zip(&layers).map(|(road, layers)| Patches::new(road, layers)).collect();
@@ -78,18 +77,18 @@ impl Surface {
     pub(crate) fn crg_bounds(&self, road: usize) -> impl Iterator<Item = f64> + '_ {
         self.layers[road]
             .iter()
-            .filter(|(r, _)| r.purpose == CrgPurpose::Elevation)
-            .flat_map(|(r, _)| [r.s_start, r.s_end])
+            .filter(|l| l.record.purpose == CrgPurpose::Elevation)
+            .flat_map(|l| [l.record.s_start, l.record.s_end])
     }
 
     /// The grid increments (du, dv) of the CRG file whose elevation record holds at s of
     /// road `road` (index), if one does.
     pub(crate) fn elevation_detail(&self, road: usize, s: f64) -> Option<(f64, f64)> {
-        let (_, k) = self.layers[road]
+        let layer = self.layers[road]
             .iter()
             .rev()
-            .find(|(r, _)| r.purpose == CrgPurpose::Elevation && r.s_start <= s && s <= r.s_end)?;
-        Some(self.files.files[*k].whole.increments())
+            .find(|l| l.record.purpose == CrgPurpose::Elevation && l.record.s_start <= s && s <= l.record.s_end)?;
+        Some(self.files.files[layer.file].whole.increments())
     }
 
     /// The outline of every CRG record's area in world x/y/z (heights from the ground,
@@ -104,7 +103,7 @@ impl Surface {
                 .junction
                 .as_ref()
                 .is_none_or(|j| self.map.roads.iter().position(|r| r.junction.as_ref() == Some(j)) == Some(i));
-            for (record, k) in &self.layers[i] {
+            for Layer { record, file: k, .. } in &self.layers[i] {
                 let own = road.crg.contains(record);
                 if !own && !first_of_junction {
                     continue;
@@ -255,7 +254,6 @@ impl Surface {
     #[inline(always)]
     fn ground_at(&self, spot: Spot, points: &mut CrgPoints, x: f64, y: f64) -> Ground {
         let Spot { pos, roll: (sr, cr), .. } = spot;
-        let road = &self.map.roads[pos.road];
         let (s, t) = (pos.s, pos.t);
         let mut ground = Ground {
             road: pos.road,
@@ -267,14 +265,14 @@ impl Surface {
         };
         let layers = &self.layers[pos.road];
         if let [Some(elevation), _] = spot.crg {
-            let (record, k) = &layers[elevation];
-            let value = crg::value(record, *k, &self.files, points, road, (x, y, s, t));
-            let own = if record.mode == crate::map::CrgMode::Attached { ground.z } else { 0.0 };
+            let layer = &layers[elevation];
+            let value = layer.value(points, (x, y, s, t));
+            let record = &layer.record;
+            let own = if record.mode == CrgMode::Attached { ground.z } else { 0.0 };
             ground.z = value * record.z_scale + record.z_offset + own;
         }
         if let [_, Some(friction)] = spot.crg {
-            let (record, k) = &layers[friction];
-            ground.friction = crg::value(record, *k, &self.files, points, road, (x, y, s, t));
+            ground.friction = layers[friction].value(points, (x, y, s, t));
         }
         ground
     }

@@ -5,8 +5,9 @@
 //! when the map is made ready; the answers are the same as the road's own lookups give
 //! (tested below), which serve the points within rounding of a cut.
 
+use crate::crg::Layer;
 use crate::lanes::{find_lane, Edge};
-use crate::map::{CrgPurpose, CrgRecord, Road};
+use crate::map::{CrgPurpose, Road};
 use crate::profile::Cubic;
 use crate::trig;
 use std::ops::Range;
@@ -72,13 +73,13 @@ fn margin(s: f64) -> f64 {
 }
 
 /// The last of `layers` with `purpose` that holds at s (the last record wins).
-pub(crate) fn layer_at(layers: &[(CrgRecord, usize)], purpose: CrgPurpose, s: f64) -> Option<usize> {
-    layers.iter().rposition(|(r, _)| r.purpose == purpose && r.s_start <= s && s <= r.s_end)
+pub(crate) fn layer_at(layers: &[Layer], purpose: CrgPurpose, s: f64) -> Option<usize> {
+    layers.iter().rposition(|l| l.record.purpose == purpose && l.record.s_start <= s && s <= l.record.s_end)
 }
 
 impl Patches {
     /// The patches of `road`, `layers` the CRG records that apply to it.
-    pub fn new(road: &Road, layers: &[(CrgRecord, usize)]) -> Patches {
+    pub fn new(road: &Road, layers: &[Layer]) -> Patches {
         let lanes = &road.lanes;
         let mut cuts: Vec<f64> = road.elevation.starts().chain(road.superelevation.starts()).collect();
         cuts.extend(lanes.offset.starts());
@@ -90,7 +91,7 @@ impl Patches {
                 cuts.extend(offsets.chain(lane.materials.iter().map(|m| m.s_offset)).map(|ds| section.s + ds));
             }
         }
-        cuts.extend(layers.iter().flat_map(|(r, _)| [r.s_start, r.s_end]));
+        cuts.extend(layers.iter().flat_map(|l| [l.record.s_start, l.record.s_end]));
         cuts.retain(|s| s.is_finite());
         cuts.sort_by(f64::total_cmp);
         cuts.dedup();
@@ -114,7 +115,7 @@ impl Patches {
     }
 
     /// Adds the patch between `lo` and `hi`, its records those holding at `at`.
-    fn push(&mut self, road: &Road, layers: &[(CrgRecord, usize)], lo: f64, hi: f64, at: f64) {
+    fn push(&mut self, road: &Road, layers: &[Layer], lo: f64, hi: f64, at: f64) {
         let section = road.lanes.section_at(at);
         let mut side = |lanes: &[crate::lanes::Lane], ds: f64| {
             let first = self.lanes.len();
