@@ -90,13 +90,14 @@ fn pieces(turn: f64, length: f64) -> usize {
 
 /// The largest turn (rad) between two stations for which [`turned_path`] is exact to
 /// rounding.
-const CLOSED_TURN: f64 = 1e-3;
+pub(crate) const CLOSED_TURN: f64 = 1e-3;
 
 /// Where a path turning by `a s + b s^2` (s from 0 to 1 over the length `length`) ends,
 /// in the frame of its start: the integrals of cos and sin of the turn by their series,
 /// the turn's powers integrated in closed form. Exact to rounding while the turn stays
 /// within [`CLOSED_TURN`] (the first terms left out are below 1e-17 of the length).
-fn turned_path(a: f64, b: f64, length: f64) -> (f64, f64) {
+#[inline(always)]
+pub(crate) fn turned_path(a: f64, b: f64, length: f64) -> (f64, f64) {
     // The integrals over 0..1 of (a s + b s^2)^n.
     let (a2, b2, ab) = (a * a, b * b, a * b);
     const THIRD: f64 = 1.0 / 3.0;

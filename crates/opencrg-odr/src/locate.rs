@@ -3,7 +3,7 @@
 //! take; a point is projected onto the reference line of each stretch whose box holds it
 //! (Newton's method on the tangent), and kept where a lane lies at the (s, t) found.
 
-use crate::geometry::{Shape, Station};
+use crate::geometry::{turned_path, Shape, Station, CLOSED_TURN};
 use crate::map::{Map, Road};
 use crate::trig;
 use rstar::{RTree, RTreeObject, AABB};
@@ -125,52 +125,83 @@ pub(crate) struct Anchor {
     bend: Bend,
 }
 
-/// A record whose feet have a closed form: a line, or an arc of this curvature.
+/// A record whose feet have a closed form: a line, an arc of this curvature, a spiral
+/// whose curvature changes at this rate (per m).
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Bend {
     Line,
     Arc(f64),
+    Spiral(f64),
     Other,
 }
 
+/// The foot of a point on an arc of curvature k, the point at `along` and `across` in the
+/// frame of one of its stations, within [`CLOSED_TURN`] of turn from it: how far on the
+/// foot lies and how far the point lies from the arc. With q = 1 - k across and
+/// z = k along / q, the foot lies atan(z) / k further and the point (1 - q sqrt(1 + z^2)) / k
+/// from the arc: by their series in z, exact to rounding while z stays within the bound
+/// (the first terms left out are below 1e-18).
+#[inline(always)]
+fn arc_foot(k: f64, along: f64, across: f64) -> Option<(f64, f64)> {
+    let q = 1.0 - k * across;
+    if !(q > 0.1) {
+        return None;
+    }
+    let inverse = 1.0 / q;
+    let z = k * along * inverse;
+    let z2 = z * z;
+    if !(z2 <= CLOSED_TURN * CLOSED_TURN) {
+        return None;
+    }
+    let ds = along * inverse * (1.0 - z2 * (1.0 / 3.0 - z2 * 0.2));
+    let drop = k * along * along * inverse * (0.5 - z2 * (0.125 - z2 * 0.0625));
+    Some((ds, across - drop))
+}
+
 impl Anchor {
-    /// The foot of (x, y) on the anchor's record, where the record is a line or an arc
-    /// and the foot lies within [`CLOSED_TURN`] of turn from the anchor: s and how far
-    /// the point lies from the line on the ground. On an arc of curvature k, with
-    /// `along` and `across` the point's place in the anchor's frame, q = 1 - k across and
-    /// z = k along / q, the foot lies atan(z) / k further and the point
-    /// (1 - q sqrt(1 + z^2)) / k from the arc: by their series in z, exact to rounding
-    /// while z stays within the bound (the first terms left out are below 1e-18).
+    /// The foot of (x, y) on the anchor's record, where the record is a line, an arc or a
+    /// spiral and the foot lies within [`CLOSED_TURN`] of turn from the anchor: s and how
+    /// far the point lies from the line on the ground. A spiral's foot is the foot on the
+    /// arc whose heading meets the spiral's where the point's tangent projection lies,
+    /// then one Newton step from the spiral's station there (turned in closed form), taken
+    /// without its station as [`Road::foot`]'s last step is, where it is within [`SNAP`].
+    /// With them, whether the foot lies more than half that turn from the anchor (time
+    /// to move the anchor on).
     #[inline(always)]
-    fn closed_foot(&self, x: f64, y: f64) -> Option<(f64, f64)> {
+    fn closed_foot(&self, x: f64, y: f64) -> Option<(f64, f64, bool)> {
         let p = &self.station;
         let (ex, ey) = (x - p.pose.x, y - p.pose.y);
         let along = ex * p.cos + ey * p.sin;
         let across = -ex * p.sin + ey * p.cos;
-        match self.bend {
-            Bend::Line => Some((self.s + along, across)),
+        let (ds, off, turn) = match self.bend {
+            Bend::Line => (along, across, 0.0),
             Bend::Arc(k) => {
-                let q = 1.0 - k * across;
-                if !(q > 0.1) {
-                    return None;
-                }
-                let inverse = 1.0 / q;
-                let z = k * along * inverse;
-                let z2 = z * z;
-                if !(z2 <= CLOSED_TURN * CLOSED_TURN) {
-                    return None;
-                }
-                let ds = along * inverse * (1.0 - z2 * (1.0 / 3.0 - z2 * 0.2));
-                let drop = k * along * along * inverse * (0.5 - z2 * (0.125 - z2 * 0.0625));
-                Some((self.s + ds, across - drop))
+                let (ds, off) = arc_foot(k, along, across)?;
+                (ds, off, k * ds)
             }
-            Bend::Other => None,
-        }
+            Bend::Spiral(rate) => {
+                let k0 = p.pose.curvature;
+                let (d, _) = arc_foot(k0 + 0.5 * rate * along, along, across)?;
+                let k1 = k0 + rate * d;
+                if !(k0.abs().max(k1.abs()) * d.abs() <= CLOSED_TURN) {
+                    return None;
+                }
+                // The spiral's station d on, in the anchor's frame, and the point from it.
+                let (lx, ly) = turned_path(k0 * d, 0.5 * rate * d * d, d);
+                let (st, ct) = trig::small_sin_cos(d * (k0 + 0.5 * rate * d));
+                let (fx, fy) = (along - lx, across - ly);
+                let (rest, off) = (fx * ct + fy * st, -fx * st + fy * ct);
+                let q = 1.0 - k1 * off;
+                if !(rest.abs() <= SNAP && q > 0.1) {
+                    return None;
+                }
+                (d + rest / q, off, k0.abs().max(k1.abs()) * d)
+            }
+            Bend::Other => return None,
+        };
+        Some((self.s + ds, off, turn.abs() > 0.5 * CLOSED_TURN))
     }
 }
-
-/// The largest turn (rad) between an anchor and a foot found in closed form.
-const CLOSED_TURN: f64 = 1e-3;
 
 /// Where a search stands on a road's reference line: s and the station there (`fresh`:
 /// whether the station is there; a foot found in closed form moves s alone).
@@ -230,6 +261,25 @@ impl Road {
         self.anchor_at(s, anchor, out)
     }
 
+    /// Moves `anchor` on to `s` on its record, the station there reached from it (or, after
+    /// [`GENERATIONS`] such moves, computed from the record), so that the feet of the points
+    /// ahead keep their closed form.
+    #[cold]
+    #[inline(never)]
+    fn move_anchor(&self, s: f64, anchor: &mut Option<Anchor>) {
+        let mut station = Station::default();
+        if let Some(a) = anchor {
+            let g = &self.plan[a.geometry];
+            if a.generation < GENERATIONS && g.station_from(&a.station, s - g.s, &mut station).is_some() {
+                a.station = station;
+                a.s = s;
+                a.generation += 1;
+                return;
+            }
+        }
+        self.anchor_at(s, anchor, &mut station);
+    }
+
     /// The reference line's station at `s` computed from its record, which becomes the
     /// anchor.
     #[inline(never)]
@@ -245,6 +295,7 @@ impl Road {
         let bend = match g.shape {
             Shape::Line | Shape::Arc { curvature: 0.0 } => Bend::Line,
             Shape::Arc { curvature } => Bend::Arc(curvature),
+            Shape::Spiral { start, end } if g.length > 0.0 => Bend::Spiral((end - start) / g.length),
             _ => Bend::Other,
         };
         *anchor = Some(Anchor { geometry, from, to, s, station: *out, generation: 0, bend });
@@ -278,10 +329,13 @@ impl Road {
             return None;
         }
         if let Some(a) = anchor {
-            if let Some((s, across)) = a.closed_foot(x, y) {
+            if let Some((s, across, far)) = a.closed_foot(x, y) {
                 if lo <= s && s <= hi && a.from <= s && s < a.to {
                     at.s = s;
                     at.fresh = false;
+                    if far {
+                        self.move_anchor(s, anchor);
+                    }
                     return Some((s, across));
                 }
             }
@@ -354,17 +408,26 @@ mod tests {
     use super::*;
     use crate::geometry::Geometry;
 
-    /// Feet found in closed form on lines and arcs of either turn are feet: the
+    /// Feet found in closed form on lines, arcs and spirals of either turn are feet: the
     /// station there, computed from the record, has the point on its normal at the
     /// distance found.
     #[test]
     fn closed_form_feet_are_feet() {
         let mut checked = 0;
-        for shape in [Shape::Line, Shape::Arc { curvature: 0.004 }, Shape::Arc { curvature: -0.1 }] {
+        let shapes = [
+            Shape::Line,
+            Shape::Arc { curvature: 0.004 },
+            Shape::Arc { curvature: -0.1 },
+            Shape::Spiral { start: 0.0, end: 0.004 },
+            Shape::Spiral { start: 0.02, end: -0.05 },
+            Shape::Spiral { start: -0.002, end: -0.1 },
+        ];
+        for shape in shapes {
             let g = Geometry { s: 5.0, x: 10.0, y: -3.0, hdg: 0.7, length: 80.0, shape };
             let station = g.station(30.0);
             let bend = match shape {
                 Shape::Arc { curvature } => Bend::Arc(curvature),
+                Shape::Spiral { start, end } => Bend::Spiral((end - start) / g.length),
                 _ => Bend::Line,
             };
             let anchor = Anchor { geometry: 0, from: 5.0, to: 85.0, s: 35.0, station, generation: 0, bend };
@@ -375,7 +438,7 @@ mod tests {
                         p.x + along * station.cos - across * station.sin,
                         p.y + along * station.sin + across * station.cos,
                     );
-                    let Some((s, off)) = anchor.closed_foot(x, y) else { continue };
+                    let Some((s, off, _)) = anchor.closed_foot(x, y) else { continue };
                     let foot = g.station(s - g.s);
                     let (ex, ey) = (x - foot.pose.x, y - foot.pose.y);
                     let (a, c) = (ex * foot.cos + ey * foot.sin, -ex * foot.sin + ey * foot.cos);
@@ -384,7 +447,8 @@ mod tests {
                 }
             }
         }
-        // Lines answer everywhere; arcs within their closed turn (0.25 m at 0.004, 1 cm at 0.1).
-        assert!(checked >= 40 + 20 + 10, "{checked}");
+        // Lines answer everywhere; arcs and spirals within their closed turn (0.25 m at a
+        // curvature of 0.004, 1 cm at 0.1).
+        assert!(checked >= 40 + 20 + 10 + 30 + 20 + 20, "{checked}");
     }
 }
