@@ -145,19 +145,22 @@ impl Surface {
         best
     }
 
-    /// Where (x, y) lies on the map: first on the road the wheel of `track` was on, near
-    /// where it was, else through the index; `None` off every road.
+    /// Where (x, y) lies on the road the wheel of `track` was on, near where it was;
+    /// `None` off that road's lanes of a type other than `none`, or where the wheel was on
+    /// no road.
     #[inline(always)]
-    fn find(&self, x: f64, y: f64, track: &mut Track) -> Option<Spot> {
-        if let Some((i, at)) = &mut track.last {
-            let road = &self.map.roads[*i];
-            let range = (at.s - 10.0, at.s + 10.0);
-            if let Some((s, ground)) = road.foot(x, y, &mut track.anchor, at, range) {
-                if let Some(spot) = self.place(*i, s, ground, &mut track.patch).filter(|spot| spot.real) {
-                    return Some(spot);
-                }
-            }
-        }
+    fn find_on_track(&self, x: f64, y: f64, track: &mut Track) -> Option<Spot> {
+        let (i, at) = track.last.as_mut()?;
+        let road = &self.map.roads[*i];
+        let range = (at.s - 10.0, at.s + 10.0);
+        let (s, ground) = road.foot(x, y, &mut track.anchor, at, range)?;
+        self.place(*i, s, ground, &mut track.patch).filter(|spot| spot.real)
+    }
+
+    /// Where (x, y) lies on the map, searched through the index, which `track` then
+    /// follows; `None` off every road.
+    #[inline(never)]
+    fn find_searched(&self, x: f64, y: f64, track: &mut Track) -> Option<Spot> {
         match self.locate(x, y) {
             Some((spot, at, anchor)) => {
                 *track = Track { last: Some((spot.pos.road, at)), anchor, patch: usize::MAX };
@@ -327,13 +330,25 @@ impl Probe {
     /// Where (x, y) lies on the map: first on the road the wheel was on, near where it
     /// was, else through the index; `None` off every road.
     pub fn locate(&mut self, x: f64, y: f64) -> Option<RoadPos> {
-        self.surface.find(x, y, &mut self.track).map(|spot| spot.pos)
+        let surface = &*self.surface;
+        let spot = surface.find_on_track(x, y, &mut self.track);
+        spot.or_else(|| surface.find_searched(x, y, &mut self.track)).map(|spot| spot.pos)
     }
 
     /// The ground at (x, y); `None` off every road.
     pub fn ground(&mut self, x: f64, y: f64) -> Option<Ground> {
         let surface = &*self.surface;
-        let spot = surface.find(x, y, &mut self.track)?;
+        match surface.find_on_track(x, y, &mut self.track) {
+            Some(spot) => Some(surface.ground_at(spot, &mut self.points, x, y)),
+            None => self.ground_searched(x, y),
+        }
+    }
+
+    /// [`Probe::ground`] where the wheel has left the road it was on (or was on none).
+    #[inline(never)]
+    fn ground_searched(&mut self, x: f64, y: f64) -> Option<Ground> {
+        let surface = &*self.surface;
+        let spot = surface.find_searched(x, y, &mut self.track)?;
         Some(surface.ground_at(spot, &mut self.points, x, y))
     }
 
