@@ -90,7 +90,7 @@ fn pieces(turn: f64, length: f64) -> usize {
 
 /// The largest turn (rad) between two stations for which [`turned_path`] is exact to
 /// rounding.
-pub(crate) const CLOSED_TURN: f64 = 1e-3;
+pub(crate) const CLOSED_TURN: f64 = trig::TINY;
 
 /// Where a path turning by `a s + b s^2` (s from 0 to 1 over the length `length`) ends,
 /// in the frame of its start: the integrals of cos and sin of the turn by their series,

@@ -102,31 +102,32 @@ impl Edge {
     }
 }
 
-/// Which lane holds t among lanes whose outer borders `outer(left, i, inner)` gives
-/// (left or right side, index outwards, its inner border), the centre lane at `offset`: the
-/// lane whose borders enclose t (on a border, the outer lane), as (left, index, inner,
-/// outer); `None` beyond the outermost lanes or on the centre line of a side without lanes.
+/// Which lane holds t among the lanes `left` and `right` of the centre lane (each side
+/// outwards), the centre lane at `offset`, `outer(lane, inner, sign)` giving a lane's outer
+/// border from its inner one (t growing outwards as `sign`): the lane whose borders enclose
+/// t (on a border, the outer lane), with its inner and outer border; `None` beyond the
+/// outermost lanes or on the centre line of a side without lanes.
 #[inline(always)]
-pub(crate) fn find_lane(
+pub(crate) fn find_lane<'a, L>(
     t: f64,
     offset: f64,
-    (left, right): (usize, usize),
-    mut outer: impl FnMut(bool, usize, f64) -> f64,
-) -> Option<(bool, usize, f64, f64)> {
+    (left, right): (&'a [L], &'a [L]),
+    outer: impl Fn(&L, f64, f64) -> f64,
+) -> Option<(&'a L, f64, f64)> {
     let mut inner = offset;
     if t >= offset {
-        for i in 0..left {
-            let o = outer(true, i, inner);
+        for lane in left {
+            let o = outer(lane, inner, 1.0);
             if t < o || (t == o && t == inner) {
-                return Some((true, i, inner, o));
+                return Some((lane, inner, o));
             }
             inner = o;
         }
     } else {
-        for i in 0..right {
-            let o = outer(false, i, inner);
+        for lane in right {
+            let o = outer(lane, inner, -1.0);
             if t > o && t <= inner || (t == o && t == inner) {
-                return Some((false, i, inner, o));
+                return Some((lane, inner, o));
             }
             inner = o;
         }
@@ -181,12 +182,9 @@ impl LaneSection {
     /// borders enclose t (on a border, the outer lane); `None` beyond the outermost lanes
     /// or on the centre line of a section without lanes there.
     pub fn lane_at(&self, ds: f64, t: f64, offset: f64) -> Option<LaneSpan<'_>> {
-        let side = |left: bool| if left { (&self.left, 1.0) } else { (&self.right, -1.0) };
-        let (left, i, inner, outer) = find_lane(t, offset, (self.left.len(), self.right.len()), |left, i, inner| {
-            let (lanes, sign) = side(left);
-            lanes[i].edge(ds).outer(ds, inner, sign)
-        })?;
-        Some(LaneSpan { lane: &side(left).0[i], inner, outer })
+        let (lane, inner, outer) =
+            find_lane(t, offset, (&self.left, &self.right), |lane, inner, sign| lane.edge(ds).outer(ds, inner, sign))?;
+        Some(LaneSpan { lane, inner, outer })
     }
 }
 

@@ -173,33 +173,34 @@ impl Anchor {
         let (ex, ey) = (x - p.pose.x, y - p.pose.y);
         let along = ex * p.cos + ey * p.sin;
         let across = -ex * p.sin + ey * p.cos;
-        let (ds, off, turn) = match self.bend {
-            Bend::Line => (along, across, 0.0),
+        let (ds, off, far) = match self.bend {
+            Bend::Line => (along, across, false),
             Bend::Arc(k) => {
                 let (ds, off) = arc_foot(k, along, across)?;
-                (ds, off, k * ds)
+                (ds, off, (k * ds).abs() > 0.5 * CLOSED_TURN)
             }
             Bend::Spiral(rate) => {
                 let k0 = p.pose.curvature;
                 let (d, _) = arc_foot(k0 + 0.5 * rate * along, along, across)?;
                 let k1 = k0 + rate * d;
-                if !(k0.abs().max(k1.abs()) * d.abs() <= CLOSED_TURN) {
+                let (turn0, turn1) = ((k0 * d).abs(), (k1 * d).abs());
+                if !(turn0 <= CLOSED_TURN && turn1 <= CLOSED_TURN) {
                     return None;
                 }
                 // The spiral's station d on, in the anchor's frame, and the point from it.
                 let (lx, ly) = turned_path(k0 * d, 0.5 * rate * d * d, d);
-                let (st, ct) = trig::small_sin_cos(d * (k0 + 0.5 * rate * d));
+                let (st, ct) = trig::tiny_sin_cos(d * (k0 + 0.5 * rate * d));
                 let (fx, fy) = (along - lx, across - ly);
                 let (rest, off) = (fx * ct + fy * st, -fx * st + fy * ct);
                 let q = 1.0 - k1 * off;
                 if !(rest.abs() <= SNAP && q > 0.1) {
                     return None;
                 }
-                (d + rest / q, off, k0.abs().max(k1.abs()) * d)
+                (d + rest / q, off, turn0.max(turn1) > 0.5 * CLOSED_TURN)
             }
             Bend::Other => return None,
         };
-        Some((self.s + ds, off, turn.abs() > 0.5 * CLOSED_TURN))
+        Some((self.s + ds, off, far))
     }
 }
 

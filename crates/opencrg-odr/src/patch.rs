@@ -176,12 +176,7 @@ impl Patches {
     pub fn lane_at(&self, patch: &Patch, s: f64, t: f64) -> Option<(&PatchLane, f64, f64)> {
         let ds = s - patch.section_s;
         let offset = patch.offset.value(s - patch.offset.s);
-        let (left, right) = (&self.lanes[patch.left.clone()], &self.lanes[patch.right.clone()]);
-        let side = |left_side: bool| if left_side { (left, 1.0) } else { (right, -1.0) };
-        let (on_left, i, inner, outer) = find_lane(t, offset, (left.len(), right.len()), |l, i, inner| {
-            let (lanes, sign) = side(l);
-            lanes[i].edge.outer(ds, inner, sign)
-        })?;
-        Some((&side(on_left).0[i], inner, outer))
+        let sides = (&self.lanes[patch.left.clone()], &self.lanes[patch.right.clone()]);
+        find_lane(t, offset, sides, |lane, inner, sign| lane.edge.outer(ds, inner, sign))
     }
 }

@@ -1,7 +1,8 @@
 //! Sine and cosine without the maths library where the angle is small: the turns of a
 //! reference line between two nearby stations and most superelevations are, and the
 //! Taylor series to the eleventh power is exact to rounding there (within one unit of
-//! the last place of the library's answer up to [`SMALL`], measured by the tests).
+//! the last place of the library's answer up to [`SMALL`], measured by the tests); the
+//! turns within [`TINY`] need its first terms only.
 
 /// The largest angle (rad) [`small_sin_cos`] takes.
 pub(crate) const SMALL: f64 = 0.1;
@@ -19,6 +20,17 @@ pub(crate) fn small_sin_cos(a: f64) -> (f64, f64) {
     let sin = a + a * x * series(&SIN);
     let cos = 1.0 + x * series(&COS);
     (sin, cos)
+}
+
+/// The largest angle (rad) [`tiny_sin_cos`] takes.
+pub(crate) const TINY: f64 = 1e-3;
+
+/// (sin a, cos a) for |a| up to [`TINY`], by the Taylor series to the fifth power (the
+/// first terms left out are below 1e-21).
+#[inline(always)]
+pub(crate) fn tiny_sin_cos(a: f64) -> (f64, f64) {
+    let x = a * a;
+    (a + a * x * (-1.0 / 6.0 + x * (1.0 / 120.0)), 1.0 + x * (-0.5 + x * (1.0 / 24.0)))
 }
 
 /// (sin a, cos a) for any a: the series where it is small, the library elsewhere.
@@ -43,6 +55,12 @@ mod tests {
             let ((s, c), (ls, lc)) = (small_sin_cos(a), a.sin_cos());
             assert!((s - ls).abs() <= f64::EPSILON * ls.abs(), "sin {a}: {s} {ls}");
             assert!((c - lc).abs() <= f64::EPSILON, "cos {a}: {c} {lc}");
+        }
+        for i in 0..=n {
+            let a = TINY * (2.0 * i as f64 / n as f64 - 1.0);
+            let ((s, c), (ls, lc)) = (tiny_sin_cos(a), a.sin_cos());
+            assert!((s - ls).abs() <= f64::EPSILON * ls.abs(), "tiny sin {a}: {s} {ls}");
+            assert!((c - lc).abs() <= f64::EPSILON, "tiny cos {a}: {c} {lc}");
         }
         assert_eq!(sin_cos(0.0), (0.0, 1.0));
         assert_eq!(sin_cos(2.0), 2f64.sin_cos());
