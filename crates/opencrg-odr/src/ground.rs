@@ -8,7 +8,7 @@
 use crate::crg::{self, CrgFiles, CrgPoints, Layer};
 use crate::locate::{Anchor, Footing, RoadIndex, RoadPos};
 use crate::map::{CrgMode, CrgPurpose, Map, Road};
-use crate::patch::{layer_at, Patches};
+use crate::patch::{layer_at, Patch, Patches};
 use crate::surface::{height_across, span_height};
 use crate::trig;
 use opencrg::Result;
@@ -148,13 +148,19 @@ impl Surface {
     /// Where (x, y) lies on the road the wheel of `track` was on, near where it was;
     /// `None` off that road's lanes of a type other than `none`, or where the wheel was on
     /// no road.
-    #[inline(always)]
     fn find_on_track(&self, x: f64, y: f64, track: &mut Track) -> Option<Spot> {
+        let (road, s, ground) = self.foot_on_track(x, y, track)?;
+        self.place(road, s, ground, &mut track.patch).filter(|spot| spot.real)
+    }
+
+    /// The foot of (x, y) on the road the wheel of `track` was on, near where it was:
+    /// the road (index), s and how far the point lies from the line on the ground.
+    #[inline(always)]
+    fn foot_on_track(&self, x: f64, y: f64, track: &mut Track) -> Option<(usize, f64, f64)> {
         let (i, at) = track.last.as_mut()?;
-        let road = &self.map.roads[*i];
         let range = (at.s - 10.0, at.s + 10.0);
-        let (s, ground) = road.foot(x, y, &mut track.anchor, at, range)?;
-        self.place(*i, s, ground, &mut track.patch).filter(|spot| spot.real)
+        let (s, ground) = self.map.roads[*i].foot(x, y, &mut track.anchor, at, range)?;
+        Some((*i, s, ground))
     }
 
     /// Where (x, y) lies on the map, searched through the index, which `track` then
@@ -176,23 +182,27 @@ impl Surface {
     /// The place on road `road` (index) at s whose surface lies over the point `ground`
     /// from the reference line (on the ground, across it); `None` outside its lanes.
     /// `patch` is the index of the road's patch tried first, and becomes the one used.
-    #[inline(always)]
     fn place(&self, road: usize, s: f64, ground: f64, patch: &mut usize) -> Option<Spot> {
-        let r = &self.map.roads[road];
-        let spot = match self.patches[road].find(s, *patch) {
-            Some(i) => {
-                *patch = i;
-                let p = self.patches[road].get(i);
-                let (roll, sin_cos) = p.tilt.unwrap_or_else(|| {
-                    let roll = p.superelevation.value(s - p.superelevation.s);
-                    (roll, trig::sin_cos(roll))
-                });
-                let t = r.across(s, ground, roll, sin_cos, p.level);
-                self.patched_spot(road, i, s, t, sin_cos)
-            }
+        let spot = match self.patched_place(road, s, ground, patch) {
+            Some(spot) => spot,
             None => self.place_from_road(road, s, ground),
         };
         spot.lane.is_some().then_some(spot)
+    }
+
+    /// [`Surface::place`] from the patch serving s, lane or not; `None` where no patch
+    /// serves s.
+    #[inline(always)]
+    fn patched_place(&self, road: usize, s: f64, ground: f64, patch: &mut usize) -> Option<Spot> {
+        let patches = &self.patches[road];
+        let (i, p) = patches.find(s, *patch)?;
+        *patch = i;
+        let (roll, sin_cos) = p.tilt.unwrap_or_else(|| {
+            let roll = p.superelevation.value(s - p.superelevation.s);
+            (roll, trig::sin_cos(roll))
+        });
+        let t = self.map.roads[road].across(s, ground, roll, sin_cos, p.level);
+        Some(self.patched_spot(road, patches, p, s, t, sin_cos))
     }
 
     /// [`Surface::place`] from the road's own records, where no patch serves s.
@@ -206,12 +216,10 @@ impl Surface {
         self.spot_from_road(road, s, t, sin_cos)
     }
 
-    /// The spot at (s, t) of road `road` (index) with the records of its patch `patch`
-    /// (which serves s), the superelevation's sine and cosine `roll`.
+    /// The spot at (s, t) of road `road` (index) with the records of `p`, one of its
+    /// `patches` (which serves s), the superelevation's sine and cosine `roll`.
     #[inline(always)]
-    fn patched_spot(&self, road: usize, patch: usize, s: f64, t: f64, roll: (f64, f64)) -> Spot {
-        let patches = &self.patches[road];
-        let p = patches.get(patch);
+    fn patched_spot(&self, road: usize, patches: &Patches, p: &Patch, s: f64, t: f64, roll: (f64, f64)) -> Spot {
         let lane = patches.lane_at(p, s, t);
         let shape = if p.level { 0.0 } else { self.map.roads[road].shape_height(s, t) };
         Spot {
@@ -247,8 +255,9 @@ impl Surface {
     /// The spot at (s, t) of road `road` (index), lane or not.
     fn spot_st(&self, road: usize, s: f64, t: f64) -> Spot {
         let roll = trig::sin_cos(self.map.roads[road].superelevation.at(s));
-        match self.patches[road].find(s, usize::MAX) {
-            Some(i) => self.patched_spot(road, i, s, t, roll),
+        let patches = &self.patches[road];
+        match patches.find(s, usize::MAX) {
+            Some((_, p)) => self.patched_spot(road, patches, p, s, t, roll),
             None => self.spot_from_road(road, s, t, roll),
         }
     }
@@ -338,10 +347,28 @@ impl Probe {
     /// The ground at (x, y); `None` off every road.
     pub fn ground(&mut self, x: f64, y: f64) -> Option<Ground> {
         let surface = &*self.surface;
-        match surface.find_on_track(x, y, &mut self.track) {
-            Some(spot) => Some(surface.ground_at(spot, &mut self.points, x, y)),
-            None => self.ground_searched(x, y),
+        if let Some((road, s, ground)) = surface.foot_on_track(x, y, &mut self.track) {
+            match surface.patched_place(road, s, ground, &mut self.track.patch) {
+                Some(spot) if spot.real => return Some(surface.ground_at(spot, &mut self.points, x, y)),
+                Some(_) => {}
+                None => {
+                    if let Some(ground) = self.ground_near_cut(road, s, ground, x, y) {
+                        return Some(ground);
+                    }
+                }
+            }
         }
+        self.ground_searched(x, y)
+    }
+
+    /// [`Probe::ground`] on the wheel's road where no patch serves s (within rounding of
+    /// a cut): from the road's own records.
+    #[cold]
+    #[inline(never)]
+    fn ground_near_cut(&mut self, road: usize, s: f64, ground: f64, x: f64, y: f64) -> Option<Ground> {
+        let surface = &*self.surface;
+        let spot = surface.place_from_road(road, s, ground);
+        (spot.lane.is_some() && spot.real).then(|| surface.ground_at(spot, &mut self.points, x, y))
     }
 
     /// [`Probe::ground`] where the wheel has left the road it was on (or was on none).
@@ -400,15 +427,18 @@ mod tests {
                         (1..40).map(|k| (road.length * k as f64 / 40.0, true)).collect();
                     stations.extend(cuts.flat_map(|c| [c - 1e-6, c + 1e-6, c + 0.01]).map(|s| (s, false)));
                     for (s, even) in stations {
-                        let Some(p) = surface.patches[i].find(s, usize::MAX) else {
+                        let patches = &surface.patches[i];
+                        let Some((_, p)) = patches.find(s, usize::MAX) else {
                             near_cuts += usize::from(even);
                             continue;
                         };
                         let roll = trig::sin_cos(road.superelevation.at(s));
                         for k in -24..=24 {
                             let t = k as f64 * 0.75 + 0.013;
-                            let (a, b) =
-                                (surface.patched_spot(i, p, s, t, roll), surface.spot_from_road(i, s, t, roll));
+                            let (a, b) = (
+                                surface.patched_spot(i, patches, p, s, t, roll),
+                                surface.spot_from_road(i, s, t, roll),
+                            );
                             let same = a.lane == b.lane
                                 && a.real == b.real
                                 && a.elevation.to_bits() == b.elevation.to_bits()

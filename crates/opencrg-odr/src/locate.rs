@@ -325,13 +325,10 @@ impl Road {
         at: &mut Footing,
         (lo, hi): (f64, f64),
     ) -> Option<(f64, f64)> {
-        let (lo, hi) = (lo.max(0.0), hi.min(self.length));
-        if !(lo <= hi) {
-            return None;
-        }
         if let Some(a) = anchor {
             if let Some((s, across, far)) = a.closed_foot(x, y) {
-                if lo <= s && s <= hi && a.from <= s && s < a.to {
+                let on_road = 0.0 <= s && s <= self.length;
+                if lo <= s && s <= hi && on_road && a.from <= s && s < a.to {
                     at.s = s;
                     at.fresh = false;
                     if far {
@@ -343,6 +340,10 @@ impl Road {
             if !at.fresh {
                 *at = Footing { s: a.s, station: a.station, fresh: true };
             }
+        }
+        let (lo, hi) = (lo.max(0.0), hi.min(self.length));
+        if !(lo <= hi) {
+            return None;
         }
         for _ in 0..30 {
             let p = &at.station;

@@ -152,23 +152,17 @@ impl Patches {
         });
     }
 
-    /// The patch serving `s`, trying `hint` (a patch's index) first; `None` within the
-    /// margin of a cut.
+    /// The patch serving `s` and its index, trying `hint` (a patch's index) first; `None`
+    /// within the margin of a cut.
     #[inline(always)]
-    pub fn find(&self, s: f64, hint: usize) -> Option<usize> {
+    pub fn find(&self, s: f64, hint: usize) -> Option<(usize, &Patch)> {
         if let Some(p) = self.patches.get(hint) {
             if p.lo < s && s < p.hi {
-                return Some(hint);
+                return Some((hint, p));
             }
         }
         let i = self.patches.partition_point(|p| p.hi <= s);
-        self.patches.get(i).filter(|p| p.lo < s && s < p.hi).map(|_| i)
-    }
-
-    /// The patch of index `i`.
-    #[inline(always)]
-    pub fn get(&self, i: usize) -> &Patch {
-        &self.patches[i]
+        self.patches.get(i).filter(|p| p.lo < s && s < p.hi).map(|p| (i, p))
     }
 
     /// The lane of patch `patch` at (s, t), with its inner and outer borders' t.
