@@ -241,12 +241,12 @@ impl Geometry {
                 if !(turn <= trig::SMALL) {
                     return None;
                 }
-                let (lx, ly) = if turn <= CLOSED_TURN {
-                    turned_path(k0 * delta, 0.5 * rate * delta * delta, delta)
+                let bend = delta * (k0 + 0.5 * rate * delta);
+                let ((lx, ly), (st, ct)) = if turn <= CLOSED_TURN {
+                    (turned_path(k0 * delta, 0.5 * rate * delta * delta, delta), trig::tiny_sin_cos(bend))
                 } else {
-                    turning_path(k0, rate, delta, turn)
+                    (turning_path(k0, rate, delta, turn), trig::small_sin_cos(bend))
                 };
-                let (st, ct) = trig::small_sin_cos(delta * (k0 + 0.5 * rate * delta));
                 let p = from.pose;
                 let pose = Pose {
                     x: p.x + from.cos * lx - from.sin * ly,

@@ -165,19 +165,18 @@ impl Anchor {
     /// arc whose heading meets the spiral's where the point's tangent projection lies,
     /// then one Newton step from the spiral's station there (turned in closed form), taken
     /// without its station as [`Road::foot`]'s last step is, where it is within [`SNAP`].
-    /// With them, whether the foot lies more than half that turn from the anchor (time
-    /// to move the anchor on).
+    /// With them, the turn between the anchor and the foot (at most; 0 on lines).
     #[inline(always)]
-    fn closed_foot(&self, x: f64, y: f64) -> Option<(f64, f64, bool)> {
+    fn closed_foot(&self, x: f64, y: f64) -> Option<(f64, f64, f64)> {
         let p = &self.station;
         let (ex, ey) = (x - p.pose.x, y - p.pose.y);
         let along = ex * p.cos + ey * p.sin;
         let across = -ex * p.sin + ey * p.cos;
-        let (ds, off, far) = match self.bend {
-            Bend::Line => (along, across, false),
+        let (ds, off, turn) = match self.bend {
+            Bend::Line => (along, across, 0.0),
             Bend::Arc(k) => {
                 let (ds, off) = arc_foot(k, along, across)?;
-                (ds, off, (k * ds).abs() > 0.5 * CLOSED_TURN)
+                (ds, off, (k * ds).abs())
             }
             Bend::Spiral(rate) => {
                 let k0 = p.pose.curvature;
@@ -196,13 +195,30 @@ impl Anchor {
                 if !(rest.abs() <= SNAP && q > 0.1) {
                     return None;
                 }
-                (d + rest / q, off, turn0.max(turn1) > 0.5 * CLOSED_TURN)
+                (d + rest / q, off, turn0.max(turn1))
             }
             Bend::Other => return None,
         };
-        Some((self.s + ds, off, far))
+        Some((self.s + ds, off, turn))
+    }
+
+    /// Where the anchor moves once a foot at s, `turn` from it, lies more than
+    /// [`MOVE_TURN`] from it: as far again ahead as it is, short of the closed turn from the
+    /// anchor, so that the wheel passes the new anchor before the next move; the foot
+    /// itself where that would leave the record.
+    fn next_s(&self, s: f64, turn: f64) -> f64 {
+        let ahead = self.s + 1.8 * (s - self.s);
+        if turn <= 0.5 * CLOSED_TURN && self.from <= ahead && ahead < self.to {
+            ahead
+        } else {
+            s
+        }
     }
 }
+
+/// The turn between an anchor and a foot found in closed form beyond which the anchor
+/// moves on (see [`Anchor::next_s`]).
+const MOVE_TURN: f64 = 0.4 * CLOSED_TURN;
 
 /// Where a search stands on a road's reference line: s and the station there (`fresh`:
 /// whether the station is there; a foot found in closed form moves s alone).
@@ -326,13 +342,14 @@ impl Road {
         (lo, hi): (f64, f64),
     ) -> Option<(f64, f64)> {
         if let Some(a) = anchor {
-            if let Some((s, across, far)) = a.closed_foot(x, y) {
+            if let Some((s, across, turn)) = a.closed_foot(x, y) {
                 let on_road = 0.0 <= s && s <= self.length;
                 if lo <= s && s <= hi && on_road && a.from <= s && s < a.to {
                     at.s = s;
                     at.fresh = false;
-                    if far {
-                        self.move_anchor(s, anchor);
+                    if turn > MOVE_TURN {
+                        let to = a.next_s(s, turn).min(self.length);
+                        self.move_anchor(to, anchor);
                     }
                     return Some((s, across));
                 }
