@@ -358,6 +358,19 @@ impl Road {
                 *at = Footing { s: a.s, station: a.station, fresh: true };
             }
         }
+        self.newton_foot(x, y, anchor, at, (lo, hi))
+    }
+
+    /// [`Road::foot`] by Newton's method, where no closed form serves.
+    #[inline(never)]
+    fn newton_foot(
+        &self,
+        x: f64,
+        y: f64,
+        anchor: &mut Option<Anchor>,
+        at: &mut Footing,
+        (lo, hi): (f64, f64),
+    ) -> Option<(f64, f64)> {
         let (lo, hi) = (lo.max(0.0), hi.min(self.length));
         if !(lo <= hi) {
             return None;
