@@ -171,7 +171,28 @@ impl Geometry {
     /// The pose `ds` after the record's start, the curve's parameter there, and the sine
     /// and cosine of the record's start heading.
     fn placed(&self, ds: f64) -> (Pose, f64, (f64, f64)) {
-        let (local_x, local_y, turn, curvature, param) = match self.shape {
+        let (local_x, local_y, turn, curvature, param) = self.local(ds);
+        let (sin, cos) = self.hdg.sin_cos();
+        let pose = Pose {
+            x: self.x + cos * local_x - sin * local_y,
+            y: self.y + sin * local_x + cos * local_y,
+            hdg: self.hdg + turn,
+            curvature,
+        };
+        (pose, param, (sin, cos))
+    }
+
+    /// The point `ds` after the record's start (x and y of [`Geometry::pose`]), `frame` the
+    /// sine and cosine of the record's start heading.
+    pub(crate) fn point_in(&self, (sin, cos): (f64, f64), ds: f64) -> [f64; 2] {
+        let (local_x, local_y, ..) = self.local(ds);
+        [self.x + cos * local_x - sin * local_y, self.y + sin * local_x + cos * local_y]
+    }
+
+    /// The point `ds` after the record's start in the record's own frame, the turn
+    /// from its start heading, the curvature and the curve's parameter there.
+    fn local(&self, ds: f64) -> (f64, f64, f64, f64, f64) {
+        match self.shape {
             Shape::Line => (ds, 0.0, 0.0, 0.0, 0.0),
             Shape::Arc { curvature: k } => {
                 // The chord 2 sin(k ds / 2) / k, at half the turn: exact as k goes to 0.
@@ -201,15 +222,7 @@ impl Geometry {
                 let c = self.curve_point(p);
                 (c.u, c.v, c.dv.atan2(c.du), c.curvature, p)
             }
-        };
-        let (sin, cos) = self.hdg.sin_cos();
-        let pose = Pose {
-            x: self.x + cos * local_x - sin * local_y,
-            y: self.y + sin * local_x + cos * local_y,
-            hdg: self.hdg + turn,
-            curvature,
-        };
-        (pose, param, (sin, cos))
+        }
     }
 
     /// The station `ds` after the record's start, reached from the station `from`

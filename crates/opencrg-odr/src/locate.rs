@@ -73,20 +73,29 @@ impl RoadIndex {
             let longest = STRETCH.max(road.length / MAX_STRETCHES);
             for w in cuts.windows(2) {
                 let n = ((w[1] - w[0]) / longest).ceil().clamp(1.0, MAX_STRETCHES) as usize;
+                // The window lies on one record: sampled from it, 4 points a stretch, each
+                // stretch's last point the next one's first.
+                let Some(g) = road.geometry_at(0.5 * (w[0] + w[1])) else { continue };
+                let frame = g.hdg.sin_cos();
+                let sample = |j: usize| {
+                    let s = w[0] + (w[1] - w[0]) * j as f64 / (4 * n) as f64;
+                    (s, g.point_in(frame, s - g.s), reach(road, s))
+                };
+                let mut first = sample(0);
                 for k in 0..n {
-                    let (s0, s1) =
-                        (w[0] + (w[1] - w[0]) * k as f64 / n as f64, w[0] + (w[1] - w[0]) * (k + 1) as f64 / n as f64);
-                    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-                    let mut room: f64 = 0.0;
-                    for j in 0..=4 {
-                        let s = s0 + (s1 - s0) * j as f64 / 4.0;
-                        let r = road.reference(s);
-                        for (c, v) in [r.x, r.y].into_iter().enumerate() {
-                            lo[c] = lo[c].min(v);
-                            hi[c] = hi[c].max(v);
+                    let (mut lo, mut hi) = (first.1, first.1);
+                    let mut room = first.2;
+                    let mut last = first;
+                    for j in 1..=4 {
+                        last = sample(4 * k + j);
+                        for c in 0..2 {
+                            lo[c] = lo[c].min(last.1[c]);
+                            hi[c] = hi[c].max(last.1[c]);
                         }
-                        room = room.max(reach(road, s));
+                        room = room.max(last.2);
                     }
+                    let (s0, s1) = (first.0, last.0);
+                    first = last;
                     // The lanes' reach, the line's bulge between the points sampled, a margin.
                     let grow = room + 0.25 * (s1 - s0) + 1.0;
                     if lo.iter().chain(&hi).all(|v| v.is_finite()) {
