@@ -3,9 +3,10 @@
 //!
 //! - `load MAP`: milliseconds to read the map (`Map::load`) and to make it ready to answer
 //!   (`Surface::new`: the index, no CRG files in the shared maps);
-//! - `wheels DIR`: four wheels of a car at 1 kHz, 20 m/s along a 1 km road with an
-//!   attached CRG file (1.6 million nodes, written to DIR): ns per wheel query, and ns per
-//!   `ContactPoint::xy_to_z` on the same CRG file along the same paths;
+//! - `wheels DIR [FROM STEPS]`: four wheels of a car at 1 kHz, 20 m/s along a 1 km road
+//!   with an attached CRG file (1.6 million nodes, written to DIR), from s = FROM (10 m) for
+//!   STEPS steps (45,000: to s = 910 m): ns per wheel query, and ns per
+//!   `ContactPoint::xy_to_z` on the same CRG file along paths of the same length;
 //! - `random MAP`: ground queries at random points of the map's extent, queries per second.
 
 use opencrg::synth::RoadSpec;
@@ -42,7 +43,7 @@ const MAP: &str = r#"<?xml version="1.0"?>
 <surface><CRG file="track.crg" sStart="0" sEnd="1000" mode="attached" orientation="same"/></surface>
 </road></OpenDRIVE>"#;
 
-fn wheels(dir: &str) {
+fn wheels(dir: &str, from: f64, steps: usize) {
     let dir = Path::new(dir);
     std::fs::create_dir_all(dir).unwrap();
     let crg = dir.join("track.crg");
@@ -69,14 +70,13 @@ fn wheels(dir: &str) {
     let surface = Arc::new(Surface::load(dir.join("track.xodr")).unwrap());
     let road = &surface.map().roads[0];
     // Four wheels at (0, +-0.8) and (2.7, +-0.8) from the car's reference point, 1 kHz at 20 m/s.
-    let steps = 45_000;
     let wheel_st = [(0.0, 0.8), (0.0, -0.8), (2.7, 0.8), (2.7, -0.8)];
     let paths: Vec<Vec<(f64, f64)>> = wheel_st
         .iter()
         .map(|&(ds, t)| {
             (0..steps)
                 .map(|i| {
-                    let p = road.surface_point(10.0 + ds + i as f64 * 0.02, t);
+                    let p = road.surface_point(from + ds + i as f64 * 0.02, t);
                     (p[0], p[1])
                 })
                 .collect()
@@ -99,7 +99,7 @@ fn wheels(dir: &str) {
     let mut sum2 = 0.0;
     for i in 0..steps {
         for (w, &(ds, v)) in wheel_st.iter().enumerate() {
-            sum2 += cps[w].xy_to_z(10.0 + ds + i as f64 * 0.02, v).unwrap_or(0.0);
+            sum2 += cps[w].xy_to_z(from + ds + i as f64 * 0.02, v).unwrap_or(0.0);
         }
     }
     let plain = t.elapsed().as_secs_f64() * 1e9 / (4 * steps) as f64;
@@ -136,10 +136,20 @@ fn main() {
     let args: Vec<String> = std::env::args().collect();
     match (args.get(1).map(String::as_str), args.get(2)) {
         (Some("load"), Some(p)) => load(p),
-        (Some("wheels"), Some(d)) => wheels(d),
+        (Some("wheels"), Some(d)) => {
+            let from = args.get(3).map_or(Some(10.0), |v| v.parse().ok());
+            let steps = args.get(4).map_or(Some(45_000), |v| v.parse().ok());
+            match (from, steps) {
+                (Some(from), Some(steps)) if (0.0..=990.0).contains(&from) && steps > 0 => wheels(d, from, steps),
+                _ => {
+                    eprintln!("odr_bench wheels: FROM is an s from 0 to 990, STEPS a positive count");
+                    std::process::exit(2);
+                }
+            }
+        }
         (Some("random"), Some(p)) => random(p),
         _ => {
-            eprintln!("usage: odr_bench load MAP | wheels DIR | random MAP");
+            eprintln!("usage: odr_bench load MAP | wheels DIR [FROM STEPS] | random MAP");
             std::process::exit(2);
         }
     }
