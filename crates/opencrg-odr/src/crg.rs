@@ -101,18 +101,29 @@ impl CrgPoints {
     }
 }
 
-/// A CRG record laid on one road, with its file's index and where its u/v or x/y come
-/// from, worked out once for every query.
+/// A CRG record laid on one road: the record, and what evaluating it needs.
 #[derive(Debug, Clone)]
 pub(crate) struct Layer {
     pub record: CrgRecord,
+    pub laid: Laid,
+}
+
+/// What evaluating a CRG record laid on a road needs, worked out once for every query:
+/// its file's index, where its u/v or x/y come from, what is done with its values.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Laid {
     /// The index of its file in [`CrgFiles::files`].
     pub file: usize,
     lay: Lay,
+    /// `zScale` and `zOffset`.
+    scale: f64,
+    offset: f64,
+    /// Whether its heights lie on the road's own (mode `attached`).
+    on_road: bool,
 }
 
 /// How a world point or a road's s/t becomes a place in a CRG file.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 enum Lay {
     /// The attached modes: u = sign (s - s0), v = sign (t - t0), on the file's grid alone
     /// (less its level line's height `base`) or on the whole file.
@@ -146,22 +157,23 @@ impl Layer {
                 first: (0.0, 0.0),
             },
         };
-        Layer { record: record.clone(), file, lay }
+        let on_road = record.mode == CrgMode::Attached;
+        let laid = Laid { file, lay, scale: record.z_scale, offset: record.z_offset, on_road };
+        Layer { record: record.clone(), laid }
     }
+}
 
-    /// The layer's CRG value at the world point (x, y), which lies at (s, t) of its road:
-    /// the height or friction before `zScale`, `zOffset` and the road's own height; NaN
-    /// where the CRG has none (a hole in its grid, border mode none).
+impl Laid {
+    /// The CRG value at the world point (x, y), which lies at (s, t) of the road: the
+    /// height or friction as the file gives it; NaN where the CRG has none (a hole in its
+    /// grid, border mode none).
     #[inline(always)]
     pub fn value(&self, points: &mut CrgPoints, (x, y, s, t): (f64, f64, f64, f64)) -> f64 {
         let found = match self.lay {
             Lay::Along { s0, t0, sign, grid, base } => {
                 let (u, v) = (sign * (s - s0), sign * (t - t0));
-                if grid {
-                    points.grid(self.file).uv_to_z(u, v).map(|z| z - base)
-                } else {
-                    points.whole(self.file).uv_to_z(u, v)
-                }
+                let point = if grid { points.grid(self.file) } else { points.whole(self.file) };
+                point.uv_to_z(u, v).map(|z| z - base)
             }
             Lay::Placed { origin, sin_cos: (sin, cos), first } => {
                 let (dx, dy) = (x - origin.0, y - origin.1);
@@ -169,6 +181,20 @@ impl Layer {
             }
         };
         found.unwrap_or(f64::NAN)
+    }
+
+    /// The surface's height where the record's elevation holds, `road` the road's own
+    /// height there: the value scaled and shifted, on the road's height in mode `attached`.
+    #[inline(always)]
+    pub fn height(&self, points: &mut CrgPoints, at: (f64, f64, f64, f64), road: f64) -> f64 {
+        let own = if self.on_road { road } else { 0.0 };
+        self.value(points, at) * self.scale + self.offset + own
+    }
+
+    /// [`Laid::value`], called rather than inlined (for the layers queried less often).
+    #[inline(never)]
+    pub fn value_called(&self, points: &mut CrgPoints, at: (f64, f64, f64, f64)) -> f64 {
+        self.value(points, at)
     }
 }
 

@@ -5,9 +5,9 @@
 //! where its wheel was, so that a wheel moving along a road is found again without the
 //! index, and its own contact points on the CRG files.
 
-use crate::crg::{self, CrgFiles, CrgPoints, Layer};
+use crate::crg::{self, CrgFiles, CrgPoints, Laid, Layer};
 use crate::locate::{Anchor, Footing, RoadIndex, RoadPos};
-use crate::map::{CrgMode, CrgPurpose, Map, Road};
+use crate::map::{CrgPurpose, Map, Road};
 use crate::patch::{layer_at, Patch, Patches};
 use crate::surface::{height_across, span_height};
 use crate::trig;
@@ -88,7 +88,7 @@ impl Surface {
             .iter()
             .rev()
             .find(|l| l.record.purpose == CrgPurpose::Elevation && l.record.s_start <= s && s <= l.record.s_end)?;
-        Some(self.files.files[layer.file].whole.increments())
+        Some(self.files.files[layer.laid.file].whole.increments())
     }
 
     /// The outline of every CRG record's area in world x/y/z (heights from the ground,
@@ -103,12 +103,12 @@ impl Surface {
                 .junction
                 .as_ref()
                 .is_none_or(|j| self.map.roads.iter().position(|r| r.junction.as_ref() == Some(j)) == Some(i));
-            for Layer { record, file: k, .. } in &self.layers[i] {
+            for Layer { record, laid } in &self.layers[i] {
                 let own = road.crg.contains(record);
                 if !own && !first_of_junction {
                     continue;
                 }
-                let line = crg::outline(record, &self.files.files[*k], road);
+                let line = crg::outline(record, &self.files.files[laid.file], road);
                 let with_z = line.iter().map(|&[x, y]| [x, y, probe.ground(x, y).map_or(f64::NAN, |g| g.z)]).collect();
                 out.push((i, record.purpose, with_z));
             }
@@ -125,8 +125,8 @@ impl Surface {
     /// holds it (a driving lane's before a lane of type `none`, then the first road in
     /// the file), with the station and the anchor its search ended on.
     #[inline(never)]
-    fn locate(&self, x: f64, y: f64) -> Option<(Spot, Footing, Option<Anchor>)> {
-        let mut best: Option<(Spot, Footing, Option<Anchor>)> = None;
+    fn locate(&self, x: f64, y: f64) -> Option<(Spot<'_>, Footing, Option<Anchor>)> {
+        let mut best: Option<(Spot<'_>, Footing, Option<Anchor>)> = None;
         for (i, s0, s1) in self.index.candidates(x, y) {
             let road = &self.map.roads[i];
             let mut anchor = None;
@@ -148,7 +148,7 @@ impl Surface {
     /// Where (x, y) lies on the road the wheel of `track` was on, near where it was;
     /// `None` off that road's lanes of a type other than `none`, or where the wheel was on
     /// no road.
-    fn find_on_track(&self, x: f64, y: f64, track: &mut Track) -> Option<Spot> {
+    fn find_on_track(&self, x: f64, y: f64, track: &mut Track) -> Option<Spot<'_>> {
         let (road, s, ground) = self.foot_on_track(x, y, track)?;
         self.place(road, s, ground, &mut track.patch).filter(|spot| spot.real)
     }
@@ -166,7 +166,7 @@ impl Surface {
     /// Where (x, y) lies on the map, searched through the index, which `track` then
     /// follows; `None` off every road.
     #[inline(never)]
-    fn find_searched(&self, x: f64, y: f64, track: &mut Track) -> Option<Spot> {
+    fn find_searched(&self, x: f64, y: f64, track: &mut Track) -> Option<Spot<'_>> {
         match self.locate(x, y) {
             Some((spot, at, anchor)) => {
                 *track = Track { last: Some((spot.pos.road, at)), anchor, patch: usize::MAX };
@@ -182,7 +182,7 @@ impl Surface {
     /// The place on road `road` (index) at s whose surface lies over the point `ground`
     /// from the reference line (on the ground, across it); `None` outside its lanes.
     /// `patch` is the index of the road's patch tried first, and becomes the one used.
-    fn place(&self, road: usize, s: f64, ground: f64, patch: &mut usize) -> Option<Spot> {
+    fn place(&self, road: usize, s: f64, ground: f64, patch: &mut usize) -> Option<Spot<'_>> {
         let spot = match self.patched_place(road, s, ground, patch) {
             Some(spot) => spot,
             None => self.place_from_road(road, s, ground),
@@ -193,7 +193,7 @@ impl Surface {
     /// [`Surface::place`] from the patch serving s, lane or not; `None` where no patch
     /// serves s.
     #[inline(always)]
-    fn patched_place(&self, road: usize, s: f64, ground: f64, patch: &mut usize) -> Option<Spot> {
+    fn patched_place(&self, road: usize, s: f64, ground: f64, patch: &mut usize) -> Option<Spot<'_>> {
         let patches = &self.patches[road];
         let (i, p) = patches.find(s, *patch)?;
         *patch = i;
@@ -208,7 +208,7 @@ impl Surface {
     /// [`Surface::place`] from the road's own records, where no patch serves s.
     #[cold]
     #[inline(never)]
-    fn place_from_road(&self, road: usize, s: f64, ground: f64) -> Spot {
+    fn place_from_road(&self, road: usize, s: f64, ground: f64) -> Spot<'_> {
         let r = &self.map.roads[road];
         let roll = r.superelevation.at(s);
         let sin_cos = trig::sin_cos(roll);
@@ -219,7 +219,15 @@ impl Surface {
     /// The spot at (s, t) of road `road` (index) with the records of `p`, one of its
     /// `patches` (which serves s), the superelevation's sine and cosine `roll`.
     #[inline(always)]
-    fn patched_spot(&self, road: usize, patches: &Patches, p: &Patch, s: f64, t: f64, roll: (f64, f64)) -> Spot {
+    fn patched_spot<'a>(
+        &self,
+        road: usize,
+        patches: &'a Patches,
+        p: &'a Patch,
+        s: f64,
+        t: f64,
+        roll: (f64, f64),
+    ) -> Spot<'a> {
         let lane = patches.lane_at(p, s, t);
         let shape = if p.level { 0.0 } else { self.map.roads[road].shape_height(s, t) };
         Spot {
@@ -230,13 +238,13 @@ impl Surface {
             elevation: p.elevation.value(s - p.elevation.s),
             above: shape + lane.map_or(0.0, |(l, inner, outer)| height_across(l.heights, inner, outer, t)),
             friction: lane.map_or(f64::NAN, |(l, ..)| l.friction),
-            crg: p.crg,
+            crg: [p.crg[0].as_ref(), p.crg[1].as_ref()],
         }
     }
 
     /// The spot at (s, t) of road `road` (index), from the road's records (where no patch
     /// serves s), the superelevation's sine and cosine `roll`.
-    fn spot_from_road(&self, road: usize, s: f64, t: f64, roll: (f64, f64)) -> Spot {
+    fn spot_from_road(&self, road: usize, s: f64, t: f64, roll: (f64, f64)) -> Spot<'_> {
         let r = &self.map.roads[road];
         let lane = r.lane_place(s, t);
         let layers = &self.layers[road];
@@ -248,12 +256,12 @@ impl Surface {
             elevation: r.elevation.at(s),
             above: r.shape_height(s, t) + lane.map_or(0.0, |(l, ds)| span_height(&l, ds, t)),
             friction: lane.and_then(|(l, ds)| l.lane.friction_at(ds)).unwrap_or(f64::NAN),
-            crg: [layer_at(layers, CrgPurpose::Elevation, s), layer_at(layers, CrgPurpose::Friction, s)],
+            crg: [CrgPurpose::Elevation, CrgPurpose::Friction].map(|p| layer_at(layers, p, s).map(|i| &layers[i].laid)),
         }
     }
 
     /// The spot at (s, t) of road `road` (index), lane or not.
-    fn spot_st(&self, road: usize, s: f64, t: f64) -> Spot {
+    fn spot_st(&self, road: usize, s: f64, t: f64) -> Spot<'_> {
         let roll = trig::sin_cos(self.map.roads[road].superelevation.at(s));
         let patches = &self.patches[road];
         match patches.find(s, usize::MAX) {
@@ -275,16 +283,11 @@ impl Surface {
             z: spot.elevation + t * sr + spot.above * cr,
             friction: spot.friction,
         };
-        let layers = &self.layers[pos.road];
         if let [Some(elevation), _] = spot.crg {
-            let layer = &layers[elevation];
-            let value = layer.value(points, (x, y, s, t));
-            let record = &layer.record;
-            let own = if record.mode == CrgMode::Attached { ground.z } else { 0.0 };
-            ground.z = value * record.z_scale + record.z_offset + own;
+            ground.z = elevation.height(points, (x, y, s, t), ground.z);
         }
         if let [_, Some(friction)] = spot.crg {
-            ground.friction = layers[friction].value(points, (x, y, s, t));
+            ground.friction = friction.value_called(points, (x, y, s, t));
         }
         ground
     }
@@ -294,7 +297,7 @@ impl Surface {
 /// sine and cosine, the lane, the reference line's height, the surface's height above the
 /// cross section, the lane material's friction and the CRG layers that hold.
 #[derive(Clone, Copy)]
-struct Spot {
+struct Spot<'a> {
     pos: RoadPos,
     roll: (f64, f64),
     /// The lane's id; `None` outside the lanes.
@@ -304,8 +307,8 @@ struct Spot {
     elevation: f64,
     above: f64,
     friction: f64,
-    /// The indices in the road's layers of the CRG records that hold: elevation, friction.
-    crg: [Option<usize>; 2],
+    /// The CRG records that hold: elevation, friction.
+    crg: [Option<&'a Laid>; 2],
 }
 
 /// Where a wheel was: its road (index) and footing there, the anchor its searches start

@@ -5,7 +5,7 @@
 //! when the map is made ready; the answers are the same as the road's own lookups give
 //! (tested below), which serve the points within rounding of a cut.
 
-use crate::crg::Layer;
+use crate::crg::{Laid, Layer};
 use crate::lanes::{find_lane, Edge};
 use crate::map::{CrgPurpose, Road};
 use crate::profile::Cubic;
@@ -51,8 +51,8 @@ pub(crate) struct Patch {
     left: Range<usize>,
     /// The lanes right of the centre, outwards.
     right: Range<usize>,
-    /// The CRG layers (indices in the road's list) that hold: elevation, friction.
-    pub crg: [Option<usize>; 2],
+    /// The CRG records that hold: elevation, friction.
+    pub crg: [Option<Laid>; 2],
 }
 
 /// A road's patches in order of s, and their lanes.
@@ -148,7 +148,7 @@ impl Patches {
             level: road.level_at(at),
             left,
             right,
-            crg: [layer_at(layers, CrgPurpose::Elevation, at), layer_at(layers, CrgPurpose::Friction, at)],
+            crg: [CrgPurpose::Elevation, CrgPurpose::Friction].map(|p| layer_at(layers, p, at).map(|i| layers[i].laid)),
         });
     }
 
