@@ -139,10 +139,12 @@ fn main() {
         (Some("wheels"), Some(d)) => {
             let from = args.get(3).map_or(Some(10.0), |v| v.parse().ok());
             let steps = args.get(4).map_or(Some(45_000), |v| v.parse().ok());
+            // The front wheels 2.7 m ahead, 2 cm a step, stay on the 1 km road.
+            let on_road = |from: f64, steps: usize| from >= 0.0 && from + 2.7 + steps as f64 * 0.02 <= 1000.0;
             match (from, steps) {
-                (Some(from), Some(steps)) if (0.0..=990.0).contains(&from) && steps > 0 => wheels(d, from, steps),
+                (Some(from), Some(steps)) if steps > 0 && on_road(from, steps) => wheels(d, from, steps),
                 _ => {
-                    eprintln!("odr_bench wheels: FROM is an s from 0 to 990, STEPS a positive count");
+                    eprintln!("odr_bench wheels: FROM (m) and STEPS (2 cm each) must keep the wheels on the 1 km road");
                     std::process::exit(2);
                 }
             }

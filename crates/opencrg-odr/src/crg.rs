@@ -201,12 +201,13 @@ impl Laid {
 /// The outline of the area a record lays its file on, in world x/y: along the road between
 /// the CRG's v borders (attached modes) or around the CRG's own grid placed as the record
 /// says (genuine, global); about a point a metre, closed.
-pub(crate) fn outline(record: &CrgRecord, file: &CrgFile, road: &Road) -> Vec<[f64; 2]> {
+pub(crate) fn outline(layer: &Layer, file: &CrgFile, road: &Road) -> Vec<[f64; 2]> {
+    let record = &layer.record;
     let crg = &file.whole;
     let ((u0, u1), (v0, v1)) = (crg.u_range(), crg.v_range());
     let mut points = Vec::new();
-    match record.mode {
-        CrgMode::Attached | CrgMode::Attached0 => {
+    match layer.laid.lay {
+        Lay::Along { .. } => {
             let (s_lo, s_hi, t_lo, t_hi) = match record.orientation {
                 CrgOrientation::Same => {
                     (record.s_offset + u0, record.s_offset + u1, record.t_offset + v0, record.t_offset + v1)
@@ -230,29 +231,16 @@ pub(crate) fn outline(record: &CrgRecord, file: &CrgFile, road: &Road) -> Vec<[f
                 points.push([x, y]);
             }
         }
-        CrgMode::Genuine | CrgMode::Global => {
+        Lay::Placed { origin, sin_cos: (sin, cos), first } => {
             let cp = ContactPoint::new(crg.clone());
             let n = ((u1 - u0).ceil() as usize).clamp(1, 100_000);
             let along = |k: usize| u0 + (u1 - u0) * k as f64 / n as f64;
             let edge = (0..=n).map(|k| (along(k), v0)).chain((0..=n).rev().map(|k| (along(k), v1)));
-            // The CRG's own x/y back to the world: the inverse of `value`'s turn.
-            let (placed, first, turn) = if record.mode == CrgMode::Global {
-                ((record.x_offset, record.y_offset), (0.0, 0.0), record.h_offset)
-            } else {
-                let at = road.reference(record.s_offset);
-                let (sin, cos) = at.hdg.sin_cos();
-                let line = crg.reference_line();
-                (
-                    (at.x - record.t_offset * sin, at.y + record.t_offset * cos),
-                    (line.x_first, line.y_first),
-                    at.hdg + record.h_offset - line.phi_first,
-                )
-            };
-            let (sin, cos) = turn.sin_cos();
+            // The CRG's own x/y back to the world: the inverse of the layer's turn.
             for (u, v) in edge {
                 if let Ok((x, y)) = cp.uv_to_xy(u, v) {
                     let (dx, dy) = (x - first.0, y - first.1);
-                    points.push([placed.0 + cos * dx - sin * dy, placed.1 + sin * dx + cos * dy]);
+                    points.push([origin.0 + cos * dx - sin * dy, origin.1 + sin * dx + cos * dy]);
                 }
             }
         }

@@ -103,12 +103,13 @@ impl Surface {
                 .junction
                 .as_ref()
                 .is_none_or(|j| self.map.roads.iter().position(|r| r.junction.as_ref() == Some(j)) == Some(i));
-            for Layer { record, laid } in &self.layers[i] {
+            for layer in &self.layers[i] {
+                let record = &layer.record;
                 let own = road.crg.contains(record);
                 if !own && !first_of_junction {
                     continue;
                 }
-                let line = crg::outline(record, &self.files.files[laid.file], road);
+                let line = crg::outline(layer, &self.files.files[layer.laid.file], road);
                 let with_z = line.iter().map(|&[x, y]| [x, y, probe.ground(x, y).map_or(f64::NAN, |g| g.z)]).collect();
                 out.push((i, record.purpose, with_z));
             }
@@ -371,7 +372,7 @@ impl Probe {
     fn ground_near_cut(&mut self, road: usize, s: f64, ground: f64, x: f64, y: f64) -> Option<Ground> {
         let surface = &*self.surface;
         let spot = surface.place_from_road(road, s, ground);
-        (spot.lane.is_some() && spot.real).then(|| surface.ground_at(spot, &mut self.points, x, y))
+        spot.real.then(|| surface.ground_at(spot, &mut self.points, x, y))
     }
 
     /// [`Probe::ground`] where the wheel has left the road it was on (or was on none).

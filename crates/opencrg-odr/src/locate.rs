@@ -211,6 +211,13 @@ impl Anchor {
         Some((self.s + ds, off, turn))
     }
 
+    /// The anchor moved on to `station` at s, reached from it.
+    fn reached(&mut self, s: f64, station: Station) {
+        self.station = station;
+        self.s = s;
+        self.generation += 1;
+    }
+
     /// Where the anchor moves once a foot at s, `turn` from it, lies more than
     /// [`MOVE_TURN`] from it: as far again ahead as it is, short of the closed turn from the
     /// anchor, so that the wheel passes the new anchor before the next move; the foot
@@ -275,9 +282,7 @@ impl Road {
                 match g.station_from(&a.station, s - g.s, out) {
                     Some(true) => return true,
                     Some(false) if a.generation < GENERATIONS => {
-                        a.station = *out;
-                        a.s = s;
-                        a.generation += 1;
+                        a.reached(s, *out);
                         return true;
                     }
                     _ => {}
@@ -297,9 +302,7 @@ impl Road {
         if let Some(a) = anchor {
             let g = &self.plan[a.geometry];
             if a.generation < GENERATIONS && g.station_from(&a.station, s - g.s, &mut station).is_some() {
-                a.station = station;
-                a.s = s;
-                a.generation += 1;
+                a.reached(s, station);
                 return;
             }
         }
