@@ -37,7 +37,7 @@ impl Reader<'_> {
     fn number(&self, node: Node, name: &str, default: Option<f64>) -> Result<f64> {
         match node.attribute(name) {
             None => default.ok_or_else(|| self.refuse(node, name, "required, missing")),
-            Some(text) => match text.trim().parse::<f64>() {
+            Some(text) => match text.trim_ascii().parse::<f64>() {
                 Ok(x) if x.is_finite() => Ok(x),
                 _ => Err(self.refuse(node, name, format!("'{text}' is not a finite number"))),
             },

@@ -1,8 +1,9 @@
 //! The XML of a map as a small tree: each element's name, attributes (entities
 //! resolved), child elements, text and where it starts in the file. Read by `quick-xml`'s
-//! streaming reader into flat arrays (no allocation per element): the reader needs a
-//! tree, the messages need positions, and a CARLA town is read several times faster this
-//! way than through a general-purpose document model.
+//! streaming reader, the attributes of each start tag split here, into flat arrays (no
+//! allocation per element): the reader needs a tree, the messages need positions, and a
+//! CARLA town is read several times faster this way than through a general-purpose
+//! document model.
 
 use quick_xml::events::{BytesStart, Event};
 use std::borrow::Cow;
@@ -46,11 +47,69 @@ fn within<'a>(text: &'a str, part: &[u8]) -> Option<&'a str> {
     text.get(offset..offset.checked_add(part.len())?)
 }
 
+/// Whether two attribute names are the same: most names differ in their length or their
+/// first byte (`a`, `b`, `c`, `d`), which is tested before the whole names are.
+fn same_name(a: &str, b: &str) -> bool {
+    a.len() == b.len() && a.as_bytes().first() == b.as_bytes().first() && a == b
+}
+
 /// An element of a [`Tree`].
 #[derive(Clone, Copy)]
 pub(crate) struct Node<'t, 'a> {
     tree: &'t Tree<'a>,
     index: u32,
+}
+
+/// The attributes of a start tag, from the text after its name: `(name, raw value)` pairs,
+/// or why the tag is malformed there (a name without `=` and a quoted value, a value
+/// holding `<`, two attributes without space between them); nothing after an error.
+struct Attributes<'a>(&'a str);
+
+impl<'a> Iterator for Attributes<'a> {
+    type Item = Result<(&'a str, &'a str), String>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        let (text, bytes) = (self.0, self.0.as_bytes());
+        let skip = |mut at: usize| {
+            while at < bytes.len() && bytes[at].is_ascii_whitespace() {
+                at += 1;
+            }
+            at
+        };
+        let start = skip(0);
+        if start == bytes.len() {
+            return None;
+        }
+        self.0 = "";
+        let malformed = |what: &str| {
+            let near: String = text[start..].chars().take(20).collect();
+            Some(Err(format!("{what} at '{near}'")))
+        };
+        if start == 0 {
+            return malformed("no space before an attribute");
+        }
+        let mut end = start;
+        while end < bytes.len() && !bytes[end].is_ascii_whitespace() && bytes[end] != b'=' {
+            end += 1;
+        }
+        let equals = skip(end);
+        if end == start || equals == bytes.len() || bytes[equals] != b'=' {
+            return malformed("an attribute without a value");
+        }
+        let open = skip(equals + 1);
+        let quote = match bytes.get(open) {
+            Some(&q) if q == b'"' || q == b'\'' => q,
+            _ => return malformed("an attribute value without quotes"),
+        };
+        let close = match memchr::memchr2(quote, b'<', &bytes[open + 1..]).map(|n| open + 1 + n) {
+            Some(close) if bytes[close] == quote => close,
+            Some(_) => return malformed("'<' in an attribute value"),
+            None => return malformed("an attribute value without its closing quote"),
+        };
+        // Every index here is at an ASCII byte (or the end), so the slices are whole UTF-8.
+        self.0 = &text[close + 1..];
+        Some(Ok((&text[start..end], &text[open + 1..close])))
+    }
 }
 
 impl<'a> Tree<'a> {
@@ -149,15 +208,17 @@ impl<'a> Tree<'a> {
         let refuse = |message: String| XmlError { offset: start, message };
         let name =
             within(text, e.local_name().into_inner()).ok_or_else(|| refuse("a name that is not UTF-8".into()))?;
-        let first = self.attributes.len() as u32;
-        for a in e.attributes() {
-            let a = a.map_err(|e| refuse(e.to_string()))?;
-            let key = within(text, a.key.into_inner()).ok_or_else(|| refuse("a name that is not UTF-8".into()))?;
-            // The value as the text's own bytes (UTF-8 already), unescaped where it needs it.
-            let value = match within(text, &a.value) {
-                Some(raw) if !raw.contains('&') => Cow::Borrowed(raw),
-                Some(raw) => quick_xml::escape::unescape(raw).map_err(|e| refuse(e.to_string()))?,
-                None => Cow::Owned(a.unescape_value().map_err(|e| refuse(e.to_string()))?.into_owned()),
+        let first = self.attributes.len();
+        let raw = within(text, e.attributes_raw()).ok_or_else(|| refuse("attributes that are not UTF-8".into()))?;
+        for attribute in Attributes(raw) {
+            let (key, raw) = attribute.map_err(refuse)?;
+            if self.attributes[first..].iter().any(|(k, _)| same_name(k, key)) {
+                return Err(refuse(format!("attribute {key} given twice")));
+            }
+            let value = if raw.contains('&') {
+                quick_xml::escape::unescape(raw).map_err(|e| refuse(e.to_string()))?
+            } else {
+                Cow::Borrowed(raw)
             };
             self.attributes.push((key, value));
         }
@@ -165,7 +226,7 @@ impl<'a> Tree<'a> {
         let index = count.ok_or_else(|| refuse("more elements than this reader takes".into()))?;
         self.names.push(name);
         self.elements.push(Element {
-            attributes: (first, self.attributes.len() as u32),
+            attributes: (first as u32, self.attributes.len() as u32),
             first_child: NONE,
             next_sibling: NONE,
             text: NONE,
@@ -214,7 +275,7 @@ impl<'t, 'a> Node<'t, 'a> {
 
     /// The value of its attribute `name`.
     pub fn attribute(&self, name: &str) -> Option<&'t str> {
-        self.attributes().find(|(k, _)| *k == name).map(|(_, v)| v)
+        self.attributes().find(|(k, _)| same_name(k, name)).map(|(_, v)| v)
     }
 
     /// Its text (the text and CDATA directly inside it, joined).
@@ -252,6 +313,9 @@ mod tests {
         assert_eq!((kids[1].attribute("x"), kids[1].text(), kids[0].text()), (Some("y"), Some("t<<u>A"), None));
         assert_eq!(&text[kids[1].start()..kids[1].start() + 2], "<c");
         assert_eq!(kids[1].attributes().count(), 1);
+        let spaced = Tree::parse("<a\n\tx = \"1\"   y:z='\"2\"'\r\n/>").unwrap();
+        let pairs: Vec<_> = spaced.root().attributes().collect();
+        assert_eq!(pairs, [("x", "1"), ("y:z", "\"2\"")]);
     }
 
     #[test]
@@ -265,6 +329,12 @@ mod tests {
             ("<a x=1/>", 0),
             ("<a x='&bogus;'/>", 0),
             ("<a x='&#xD800;'/>", 0),
+            ("<a x='1'y='2'/>", 0),
+            ("<a x='a<b'/>", 0),
+            ("<a x/>", 0),
+            ("<a ='1'/>", 0),
+            ("<a x:'1'/>", 0),
+            ("<a x=\"1'/>", 0),
         ] {
             let e = Tree::parse(text).err().unwrap_or_else(|| panic!("{text:?} accepted"));
             assert!(e.offset >= at && e.offset <= text.len(), "{text:?}: {e:?}");
