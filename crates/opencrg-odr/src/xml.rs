@@ -60,13 +60,14 @@ pub(crate) struct Node<'t, 'a> {
     index: u32,
 }
 
-/// The attributes of a start tag, from the text after its name: `(name, raw value)` pairs,
-/// or why the tag is malformed there (a name without `=` and a quoted value, a value
-/// holding `<`, two attributes without space between them); nothing after an error.
+/// The attributes of a start tag, from the text after its name: name, raw value and
+/// whether the value holds an entity reference, or why the tag is malformed there (a name
+/// without `=` and a quoted value, a value holding `<`, two attributes without space
+/// between them); nothing after an error.
 struct Attributes<'a>(&'a str);
 
 impl<'a> Iterator for Attributes<'a> {
-    type Item = Result<(&'a str, &'a str), String>;
+    type Item = Result<(&'a str, &'a str, bool), String>;
 
     fn next(&mut self) -> Option<Self::Item> {
         let (text, bytes) = (self.0, self.0.as_bytes());
@@ -101,14 +102,18 @@ impl<'a> Iterator for Attributes<'a> {
             Some(&q) if q == b'"' || q == b'\'' => q,
             _ => return malformed("an attribute value without quotes"),
         };
-        let close = match memchr::memchr2(quote, b'<', &bytes[open + 1..]).map(|n| open + 1 + n) {
-            Some(close) if bytes[close] == quote => close,
-            Some(_) => return malformed("'<' in an attribute value"),
-            None => return malformed("an attribute value without its closing quote"),
-        };
+        let (mut close, mut entity) = (open + 1, false);
+        loop {
+            match memchr::memchr3(quote, b'<', b'&', &bytes[close..]).map(|n| close + n) {
+                Some(at) if bytes[at] == quote => break close = at,
+                Some(at) if bytes[at] == b'&' => (close, entity) = (at + 1, true),
+                Some(_) => return malformed("'<' in an attribute value"),
+                None => return malformed("an attribute value without its closing quote"),
+            }
+        }
         // Every index here is at an ASCII byte (or the end), so the slices are whole UTF-8.
         self.0 = &text[close + 1..];
-        Some(Ok((&text[start..end], &text[open + 1..close])))
+        Some(Ok((&text[start..end], &text[open + 1..close], entity)))
     }
 }
 
@@ -211,11 +216,11 @@ impl<'a> Tree<'a> {
         let first = self.attributes.len();
         let raw = within(text, e.attributes_raw()).ok_or_else(|| refuse("attributes that are not UTF-8".into()))?;
         for attribute in Attributes(raw) {
-            let (key, raw) = attribute.map_err(refuse)?;
+            let (key, raw, entity) = attribute.map_err(refuse)?;
             if self.attributes[first..].iter().any(|(k, _)| same_name(k, key)) {
                 return Err(refuse(format!("attribute {key} given twice")));
             }
-            let value = if raw.contains('&') {
+            let value = if entity {
                 quick_xml::escape::unescape(raw).map_err(|e| refuse(e.to_string()))?
             } else {
                 Cow::Borrowed(raw)
