@@ -1,7 +1,7 @@
 //! The ground at a world x/y: world-to-road round trips on the shared maps, and the CRG
-//! records of every mode and orientation against closed forms, with plane CRG files
-//! (z = a u + b v + c on a reference line that climbs and is banked, which the attached
-//! mode must disregard).
+//! records of every mode and orientation, of roads and of junctions, against closed forms,
+//! with plane CRG files (z = a u + b v + c on a reference line that climbs and is banked,
+//! which the attached mode must disregard).
 
 use opencrg::synth::RoadSpec;
 use opencrg_odr::{Map, Surface};
@@ -318,4 +318,65 @@ fn a_wheel_moving_in_small_steps_is_found_as_a_fresh_search_finds_it() {
         assert!(worst < 1e-9, "{map}: {worst}");
     }
     assert!(compared > 1000, "{compared}");
+}
+
+/// Two roads end to end, the second a connecting road of junction `j` whose records are
+/// `junction_records`; the connecting road carries `own` records.
+fn junction_map(dir: &Path, junction_records: &str, own: &str) -> Map {
+    let lanes = r#"<lanes><laneSection s="0">
+<left><lane id="1" type="driving"><width sOffset="0" a="3" b="0" c="0" d="0"/><material sOffset="0" friction="0.8"/></lane></left>
+<center><lane id="0" type="none"/></center>
+<right><lane id="-1" type="driving"><width sOffset="0" a="3" b="0" c="0" d="0"/><material sOffset="0" friction="0.8"/></lane></right>
+</laneSection></lanes>"#;
+    let text = format!(
+        r#"<?xml version="1.0"?>
+<OpenDRIVE><header revMajor="1" revMinor="6"/>
+<road id="r" length="30" junction="-1">
+<planView><geometry s="0" x="0" y="0" hdg="0" length="30"><line/></geometry></planView>
+<elevationProfile><elevation s="0" a="1" b="0.02" c="0" d="0"/></elevationProfile>
+{lanes}
+</road>
+<road id="c" length="20" junction="j">
+<planView><geometry s="0" x="30" y="0" hdg="0" length="20"><line/></geometry></planView>
+<elevationProfile><elevation s="0" a="1.6" b="0.02" c="0" d="0"/></elevationProfile>
+{lanes}
+<surface>{own}</surface>
+</road>
+<junction id="j" name="j"><connection id="0" incomingRoad="r" connectingRoad="c" contactPoint="start"/>
+<surface>{junction_records}</surface></junction>
+</OpenDRIVE>"#
+    );
+    let path = dir.join("junction.xodr");
+    std::fs::write(&path, text).unwrap();
+    Map::load(&path).unwrap()
+}
+
+#[test]
+fn a_junctions_records_lie_on_its_connecting_roads_only() {
+    let d = dir("junction");
+    // Both CRG files start at the connecting road's start, along it: u = x - 30, v = y.
+    plane_crg(&d, "plane.crg", (A, B, C), (30.0, 0.0, 0.0), false);
+    plane_crg(&d, "mu.crg", (0.0, 0.05, 0.6), (30.0, 0.0, 0.0), false);
+    let records = r#"<CRG file="plane.crg" mode="global" zOffset="0.1" zScale="2"/>
+                     <CRG file="mu.crg" mode="global" purpose="friction"/>"#;
+    let map = junction_map(&d, records, "");
+    assert!(opencrg_odr::check(&map).is_empty(), "{:?}", opencrg_odr::check(&map));
+    let surface = Arc::new(Surface::new(map).unwrap());
+    let mut probe = surface.probe();
+    for (x, y) in [(31.0, 1.0), (38.5, -1.5), (49.0, 0.3)] {
+        let g = probe.ground(x, y).unwrap();
+        assert_eq!(surface.map().roads[g.road].id, "c");
+        let want = 2.0 * (A * (x - 30.0) + B * y + C) + 0.1;
+        assert!((g.z - want).abs() < 1e-6, "({x}, {y}): {} vs {want}", g.z);
+        assert!((g.friction - (0.6 + 0.05 * y)).abs() < 1e-6, "({x}, {y}): {}", g.friction);
+    }
+    // The incoming road keeps its own height and material.
+    let g = probe.ground(20.0, 1.0).unwrap();
+    assert_eq!(surface.map().roads[g.road].id, "r");
+    assert!((g.z - (1.0 + 0.02 * 20.0)).abs() < 1e-9 && g.friction == 0.8, "{g:?}");
+    // A connecting road with records of its own under a junction that has some: a finding
+    // naming the junction.
+    let own = r#"<CRG file="plane.crg" sStart="0" sEnd="20" mode="attached" orientation="same"/>"#;
+    let findings = opencrg_odr::check(&junction_map(&d, records, own));
+    assert!(findings.iter().any(|f| f.place.contains("junction j")), "{findings:?}");
 }
