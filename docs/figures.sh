@@ -15,3 +15,6 @@ mkdir -p "$out"
 "$opencrg" roughness "$road" --plot "$out/demo_roughness.png" >/dev/null
 "$opencrg" odr render ../shared/opendrive/carla/Town03.xodr "$out/town03.png" --size 900 2>/dev/null
 "$opencrg" odr render examples/data/demo_map.xodr "$out/demo_map.png" --size 900 2>/dev/null
+for mode in attached attached0 genuine global; do
+    "$opencrg" odr render "examples/data/modes/$mode.xodr" "$out/mode_$mode.png" --size 600 2>/dev/null
+done
