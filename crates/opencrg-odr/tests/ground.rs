@@ -188,25 +188,36 @@ fn attached0_records_give_the_crg_height_whole() {
 fn genuine_and_global_records_lay_the_crg_in_its_own_frame() {
     let d = dir("genuine");
     let (x0, y0, phi0) = (100.0, 50.0, 0.7);
+    // genuine: the CRG's start at the road's point s = 20, t = 1 (its heading turned by
+    // 0.1), wherever the file puts it: at (x0, y0, phi0), or where its own modifiers move it.
+    let moved = RoadSpec::straight(20.0, 4.0, 0.25, 0.25)
+        .starting_at(x0, y0, phi0)
+        .with_elevation(|u, v| A * u + B * v + C)
+        .with_header_text("$ROAD_CRG_MODS\nREFPOINT_X = 7\nREFPOINT_Y = -3\nREFPOINT_PHI = 2.5\n$\n");
+    std::fs::write(d.join("moved.crg"), moved.to_crg()).unwrap();
     plane_crg(&d, "plane.crg", (A, B, C), (x0, y0, phi0), false);
-    // genuine: the CRG's start at the road's point s = 20, t = 1 (its heading turned by 0.1).
-    let surface = map_with(
-        &d,
-        r#"<CRG file="plane.crg" sStart="15" sEnd="40" mode="genuine" sOffset="20" tOffset="1" hOffset="0.1" zOffset="-0.2"/>"#,
-    );
-    let road = &surface.map().roads[0];
-    let at = road.reference(20.0);
-    let (ox, oy) = (at.x - at.hdg.sin(), at.y + at.hdg.cos());
-    let dir_h = at.hdg + 0.1;
-    let mut probe = surface.probe();
-    for (s, t) in [(22.0, 1.5), (26.0, 0.5), (33.0, 2.5)] {
-        let p = road_point(&surface, s, t);
-        let (dx, dy) = (p[0] - ox, p[1] - oy);
-        let (u, v) = (dx * dir_h.cos() + dy * dir_h.sin(), -dx * dir_h.sin() + dy * dir_h.cos());
-        assert!((0.0..=20.0).contains(&u) && (-2.0..=2.0).contains(&v), "({u}, {v}) outside the CRG");
-        let want = A * u + B * v + C - 0.2;
-        let g = probe.ground(p[0], p[1]).unwrap();
-        assert!((g.z - want).abs() < 1e-5, "genuine s {s} t {t}: {} vs {want}", g.z);
+    // The modifiers move the reference point's height (C) to REFPOINT_Z = 0 as well.
+    for (file, lift) in [("plane.crg", 0.0), ("moved.crg", -C)] {
+        let surface = map_with(
+            &d,
+            &format!(
+                r#"<CRG file="{file}" sStart="15" sEnd="40" mode="genuine" sOffset="20" tOffset="1" hOffset="0.1" zOffset="-0.2"/>"#
+            ),
+        );
+        let road = &surface.map().roads[0];
+        let at = road.reference(20.0);
+        let (ox, oy) = (at.x - at.hdg.sin(), at.y + at.hdg.cos());
+        let dir_h = at.hdg + 0.1;
+        let mut probe = surface.probe();
+        for (s, t) in [(22.0, 1.5), (26.0, 0.5), (33.0, 2.5)] {
+            let p = road_point(&surface, s, t);
+            let (dx, dy) = (p[0] - ox, p[1] - oy);
+            let (u, v) = (dx * dir_h.cos() + dy * dir_h.sin(), -dx * dir_h.sin() + dy * dir_h.cos());
+            assert!((0.0..=20.0).contains(&u) && (-2.0..=2.0).contains(&v), "({u}, {v}) outside the CRG");
+            let want = A * u + B * v + C - 0.2 + lift;
+            let g = probe.ground(p[0], p[1]).unwrap();
+            assert!((g.z - want).abs() < 1e-5, "genuine {file} s {s} t {t}: {} vs {want}", g.z);
+        }
     }
     // global: the map's x/y turned by hOffset about (xOffset, yOffset) are the CRG's x/y.
     let d = dir("global");
