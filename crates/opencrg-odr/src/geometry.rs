@@ -81,11 +81,16 @@ fn cubic_bend(c: &[f64; 4], p: f64) -> f64 {
     2.0 * c[2] + 6.0 * c[3] * p
 }
 
-/// Quadrature pieces for an integrand that turns through `turn` radians: one per radian,
-/// and at least one per 100 m of `length` (at most 4096: a spiral turning through more
-/// than 650 full circles is no road).
-fn pieces(turn: f64, length: f64) -> usize {
-    (turn.abs().max(length.abs() / 100.0).ceil() as usize).clamp(1, 4096)
+/// The most a spiral record may turn, its largest curvature times its length (rad): ten
+/// full circles, far beyond any road's transition curve. The reader refuses a record
+/// beyond it, so that a point of a spiral never costs more than 63 quadrature pieces.
+pub(crate) const MAX_SPIRAL_TURN: f64 = 20.0 * std::f64::consts::PI;
+
+/// Quadrature pieces for an integrand that turns through `turn` radians: one per radian
+/// (the 16-point rule is exact to rounding over a radian, however long the piece), at
+/// most 4096 (beyond a record's end, where the shape continues).
+fn pieces(turn: f64) -> usize {
+    (turn.abs().ceil() as usize).clamp(1, 4096)
 }
 
 /// The largest turn (rad) between two stations for which [`turned_path`] is exact to
@@ -211,7 +216,7 @@ impl Geometry {
                     },
                     0.0,
                     ds,
-                    pieces(turn_rate * ds, ds),
+                    pieces(turn_rate * ds),
                     16,
                 );
                 (x, y, angle(ds), start + rate * ds, 0.0)

@@ -72,6 +72,10 @@ fn margin(s: f64) -> f64 {
     }
 }
 
+/// The most lanes the patches of a road keep per record of the road (lane, or cut along
+/// s), beyond a thousand: real roads keep a few.
+const MAX_LANES_PER_RECORD: usize = 16;
+
 /// The last of `layers` with `purpose` that holds at s (the last record wins).
 pub(crate) fn layer_at(layers: &[Layer], purpose: CrgPurpose, s: f64) -> Option<usize> {
     layers.iter().rposition(|l| l.record.purpose == purpose && l.record.s_start <= s && s <= l.record.s_end)
@@ -95,20 +99,34 @@ impl Patches {
         cuts.retain(|s| s.is_finite());
         cuts.sort_by(f64::total_cmp);
         cuts.dedup();
-        let mut out = Patches::default();
         let bounds = std::iter::once(f64::NEG_INFINITY).chain(cuts.iter().copied());
-        for (start, end) in bounds.zip(cuts.iter().copied().chain([f64::INFINITY])) {
-            let (lo, hi) = (start + margin(start), end - margin(end));
-            if !(lo < hi) {
-                continue;
-            }
-            // Where every record holds as it does all over the patch.
-            let at = match (start.is_finite(), end.is_finite()) {
-                (true, true) => 0.5 * (start + end),
-                (true, false) => start + 1.0,
-                (false, true) => end - 1.0,
-                (false, false) => 0.0,
-            };
+        let spans: Vec<(f64, f64, f64)> = bounds
+            .zip(cuts.iter().copied().chain([f64::INFINITY]))
+            .filter_map(|(start, end)| {
+                let (lo, hi) = (start + margin(start), end - margin(end));
+                // Where every record holds as it does all over the patch.
+                let at = match (start.is_finite(), end.is_finite()) {
+                    (true, true) => 0.5 * (start + end),
+                    (true, false) => start + 1.0,
+                    (false, true) => end - 1.0,
+                    (false, false) => 0.0,
+                };
+                (lo < hi).then_some((lo, hi, at))
+            })
+            .collect();
+        // Each patch keeps its section's lanes: many lanes times many cuts (a file made to
+        // blow up) would take memory out of all proportion to the file, so beyond a bound
+        // proportional to the road's own records it answers from those records instead.
+        let lanes_kept: usize = spans
+            .iter()
+            .map(|&(.., at)| lanes.section_at(at).map_or(0, |(sec, _)| sec.left.len() + sec.right.len()))
+            .sum();
+        let records = cuts.len() + lanes.sections.iter().map(|sec| sec.left.len() + sec.right.len()).sum::<usize>();
+        let mut out = Patches::default();
+        if lanes_kept > MAX_LANES_PER_RECORD * records + 1000 {
+            return out;
+        }
+        for (lo, hi, at) in spans {
             out.push(road, layers, lo, hi, at);
         }
         out
@@ -172,5 +190,51 @@ impl Patches {
         let offset = patch.offset.value(s - patch.offset.s);
         let sides = (&self.lanes[patch.left.clone()], &self.lanes[patch.right.clone()]);
         find_lane(t, offset, sides, |lane, inner, sign| lane.edge.outer(ds, inner, sign))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::map::Map;
+
+    /// Every road of the shared maps keeps its patches; a road of many lanes, one of them
+    /// with a width record every millimetre, keeps none (its product would be 900,000
+    /// lanes kept) and is answered from its own records.
+    #[test]
+    fn the_bound_keeps_real_roads_patched_and_stops_a_blow_up() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/opendrive");
+        let mut roads = 0;
+        for group in ["carla", "esmini"] {
+            for entry in std::fs::read_dir(dir.join(group)).unwrap() {
+                let path = entry.unwrap().path();
+                if path.extension().is_some_and(|e| e == "xodr") {
+                    for road in &Map::load(&path).unwrap().roads {
+                        assert!(!Patches::new(road, &[]).patches.is_empty(), "{} road {}", path.display(), road.id);
+                        roads += 1;
+                    }
+                }
+            }
+        }
+        assert!(roads > 1400, "{roads}");
+        let lane = |id: usize, widths: &str| format!("<lane id=\"{id}\" type=\"driving\">{widths}</lane>");
+        let many: String = (0..3000)
+            .map(|k| format!("<width sOffset=\"{}\" a=\"3\" b=\"0\" c=\"0\" d=\"0\"/>", k as f64 * 0.001))
+            .collect();
+        let thin = "<width sOffset=\"0\" a=\"0.01\" b=\"0\" c=\"0\" d=\"0\"/>";
+        let lanes: String = (1..=300).map(|id| lane(id, if id == 1 { &many } else { thin })).collect();
+        let text = format!(
+            "<OpenDRIVE><header revMajor=\"1\" revMinor=\"8\"/><road id=\"r\" length=\"100\" junction=\"-1\">\
+             <planView><geometry s=\"0\" x=\"0\" y=\"0\" hdg=\"0\" length=\"100\"><line/></geometry></planView>\
+             <lanes><laneSection s=\"0\"><left>{lanes}</left><center><lane id=\"0\" type=\"none\"/></center></laneSection></lanes>\
+             </road></OpenDRIVE>"
+        );
+        let map = Map::from_bytes(text.as_bytes(), std::path::Path::new("blow-up.xodr")).unwrap();
+        assert!(Patches::new(&map.roads[0], &[]).patches.is_empty());
+        let surface = std::sync::Arc::new(crate::Surface::new(map).unwrap());
+        let mut probe = surface.probe();
+        for (x, y, lane) in [(1.0005, 1.0, 1), (50.0, 2.9, 1), (50.0, 3.005, 2), (99.0, 3.015, 3)] {
+            assert_eq!(probe.ground(x, y).map(|g| g.lane), Some(lane), "({x}, {y})");
+        }
     }
 }

@@ -3,7 +3,7 @@
 //! element without a required attribute or with a value that is not a number is refused
 //! with the file, the line and the element named.
 
-use crate::geometry::{Geometry, Shape};
+use crate::geometry::{Geometry, Shape, MAX_SPIRAL_TURN};
 use crate::lanes::{Height, Lane, LaneSection, Lanes, Material};
 use crate::map::{CrgMode, CrgOrientation, CrgPurpose, CrgRecord, Header, Junction, Map, Road, ShapeGroup};
 use crate::profile::{Cubic, Profile};
@@ -89,6 +89,13 @@ impl Reader<'_> {
         let length = self.number(node, "length", None)?;
         if length < 0.0 {
             return Err(self.refuse(node, "length", format!("{length} is negative")));
+        }
+        if let Shape::Spiral { start, end } = shape {
+            let turn = start.abs().max(end.abs()) * length;
+            if turn > MAX_SPIRAL_TURN {
+                let message = format!("turns by up to {turn:.4e} rad over its {length} m: more than ten full circles");
+                return Err(self.refuse(shape_node, "", message));
+            }
         }
         Ok(Geometry {
             s: self.number(node, "s", None)?,

@@ -60,6 +60,17 @@ fn broken_maps_are_refused_with_file_line_and_element() {
         "{ROAD_START}<road id=\"7\" length=\"10\"><surface><CRG file=\"a.crg\" sStart=\"0\" sEnd=\"5\" mode=\"glued\"/></surface></road></OpenDRIVE>"
     ));
     assert!(e.contains("<CRG> mode") && e.contains("'glued'"), "{e}");
+    // A spiral turning through more than ten full circles (a length 1e7 instead of 10):
+    // refused when read, not evaluated for minutes.
+    let spiral = |length: &str| {
+        format!(
+            "{ROAD_START}<road id=\"7\" length=\"{length}\"><planView><geometry s=\"0\" x=\"0\" y=\"0\" hdg=\"0\" length=\"{length}\">\n\
+             <spiral curvStart=\"0\" curvEnd=\"1\"/></geometry></planView></road></OpenDRIVE>"
+        )
+    };
+    let e = refusal(&spiral("1e7"));
+    assert!(e.contains("bad.xodr:5") && e.contains("<spiral>") && e.contains("ten full circles"), "{e}");
+    assert!(Map::from_bytes(spiral("10").as_bytes(), Path::new("ok.xodr")).is_ok());
     assert!(Map::load("/nonexistent/map.xodr").unwrap_err().to_string().contains("cannot read"));
 }
 
