@@ -39,10 +39,12 @@ pub struct RoadIndex {
     tree: RTree<Stretch>,
 }
 
-/// The longest stretch indexed (m), unless a road would need more than [`MAX_STRETCHES`].
+/// The longest stretch indexed (m), unless the map would need more than [`MAX_STRETCHES`].
 const STRETCH: f64 = 5.0;
-/// The most stretches a road is cut into (a road of 500 km in 5 m stretches).
-const MAX_STRETCHES: f64 = 100_000.0;
+/// About the most stretches a map is cut into (5,000 km of roads in 5 m stretches; longer
+/// stretches beyond, so that the index stays in proportion to the file however long its
+/// roads say they are).
+const MAX_STRETCHES: f64 = 1_000_000.0;
 
 /// How far the lanes of `road` reach from its reference line at `s` (m, on the ground).
 fn reach(road: &Road, s: f64) -> f64 {
@@ -61,6 +63,8 @@ impl RoadIndex {
     /// The index of `map`'s roads.
     pub fn new(map: &Map) -> RoadIndex {
         let mut stretches = Vec::new();
+        let total: f64 = map.roads.iter().map(|r| r.length).filter(|l| l.is_finite() && *l > 0.0).sum();
+        let longest = STRETCH.max(total / MAX_STRETCHES);
         for (i, road) in map.roads.iter().enumerate() {
             if road.plan.is_empty() || !(road.length > 0.0) {
                 continue;
@@ -69,8 +73,6 @@ impl RoadIndex {
             cuts.retain(|s| (0.0..=road.length).contains(s));
             cuts.sort_by(f64::total_cmp);
             cuts.dedup();
-            cuts.truncate(MAX_STRETCHES as usize);
-            let longest = STRETCH.max(road.length / MAX_STRETCHES);
             for w in cuts.windows(2) {
                 let n = ((w[1] - w[0]) / longest).ceil().clamp(1.0, MAX_STRETCHES) as usize;
                 // The window lies on one record: sampled from it, 4 points a stretch, each
@@ -451,6 +453,29 @@ impl Road {
 mod tests {
     use super::*;
     use crate::geometry::Geometry;
+
+    /// A small file whose roads say they are 10,000 km long each (a typo a hundred times
+    /// over) is indexed in about [`MAX_STRETCHES`] stretches, not a billion, and its points
+    /// are found.
+    #[test]
+    fn the_index_stays_in_proportion_to_the_file() {
+        let road = |i: usize| {
+            format!(
+                "<road id=\"{i}\" length=\"1e7\" junction=\"-1\"><planView><geometry s=\"0\" x=\"0\" y=\"{}\" hdg=\"0\" length=\"1e7\"><line/></geometry></planView>\
+                 <lanes><laneSection s=\"0\"><left><lane id=\"1\" type=\"driving\"><width sOffset=\"0\" a=\"3\" b=\"0\" c=\"0\" d=\"0\"/></lane></left>\
+                 <center><lane id=\"0\" type=\"none\"/></center></laneSection></lanes></road>",
+                i * 10
+            )
+        };
+        let roads: String = (0..100).map(road).collect();
+        let text = format!("<OpenDRIVE><header revMajor=\"1\" revMinor=\"8\"/>{roads}</OpenDRIVE>");
+        let map = Map::from_bytes(text.as_bytes(), std::path::Path::new("long.xodr")).unwrap();
+        let index = RoadIndex::new(&map);
+        let size = index.tree.size();
+        assert!((100..=MAX_STRETCHES as usize + 100).contains(&size), "{size} stretches");
+        let found: Vec<usize> = index.candidates(5e6, 301.0).map(|(road, ..)| road).collect();
+        assert!(found.contains(&30), "{found:?}");
+    }
 
     /// Feet found in closed form on lines, arcs and spirals of either turn are feet: the
     /// station there, computed from the record, has the point on its normal at the
