@@ -8,7 +8,7 @@
 use crate::crg::{self, CrgFiles, CrgPoints, Laid, Layer};
 use crate::locate::{Anchor, Footing, RoadIndex, RoadPos};
 use crate::map::{CrgPurpose, Map, Road};
-use crate::patch::{layer_at, Patch, Patches};
+use crate::patch::{layer_at, visible, Patch, Patches};
 use crate::surface::{height_across, span_height};
 use crate::trig;
 use opencrg::Result;
@@ -60,7 +60,8 @@ impl Surface {
             .iter()
             .map(|road| {
                 let junction = road.junction.as_ref().and_then(|j| map.junctions.iter().find(|x| &x.id == j));
-                let records = road.crg.iter().chain(junction.into_iter().flat_map(|j| &j.crg));
+                let records = road.crg.iter().chain(junction.into_iter().flat_map(|j| &j.crg)).collect();
+                let records = visible(records).into_iter();
                 records.filter_map(|r| files.index(r).map(|k| Layer::new(r, k, &files, road))).collect::<Vec<_>>()
             })
             .collect::<Vec<_>>();
