@@ -2,6 +2,8 @@
 //! the roads they lie on, each finding naming the road or junction and the line.
 
 use crate::map::{CrgMode, CrgOrientation, CrgPurpose, CrgRecord, Map, Road};
+use std::collections::BTreeMap;
+use std::path::PathBuf;
 
 /// One thing wrong with a map.
 #[derive(Debug, Clone, PartialEq)]
@@ -24,9 +26,20 @@ impl std::fmt::Display for Finding {
 /// is not reported (m).
 const GAP: f64 = 0.01;
 
+/// Why each CRG file the records name cannot be used (`None`: it can), each read once.
+type Files = BTreeMap<PathBuf, Option<String>>;
+
 /// The findings of the rules of one record (`length`: of its road; `None` for a
-/// junction's, `old` when the map is older than OpenDRIVE 1.8).
-fn record_findings(record: &CrgRecord, place: &str, length: Option<f64>, old: bool, out: &mut Vec<Finding>) {
+/// junction's, `old` when the map is older than OpenDRIVE 1.8), `files` the files read so
+/// far.
+fn record_findings(
+    record: &CrgRecord,
+    place: &str,
+    length: Option<f64>,
+    old: bool,
+    files: &mut Files,
+    out: &mut Vec<Finding>,
+) {
     let mut find = |message: String| {
         out.push(Finding { line: record.line, place: format!("{place}, CRG record '{}'", record.file), message })
     };
@@ -65,9 +78,11 @@ fn record_findings(record: &CrgRecord, place: &str, length: Option<f64>, old: bo
     } else if record.mode != CrgMode::Global && old {
         find("a junction's records are of mode global before OpenDRIVE 1.8".into());
     }
-    match opencrg::Road::load(&record.path) {
-        Ok(_) => {}
-        Err(e) => find(format!("the CRG file cannot be used: {e}")),
+    let unusable = files
+        .entry(record.path.clone())
+        .or_insert_with(|| opencrg::Road::load(&record.path).err().map(|e| e.to_string()));
+    if let Some(e) = unusable {
+        find(format!("the CRG file cannot be used: {e}"));
     }
 }
 
@@ -101,18 +116,18 @@ fn road_findings(road: &Road, out: &mut Vec<Finding>) {
 /// Everything wrong with `map`, in the file's order: the roads' geometry, the CRG records'
 /// rules and files, junctions whose connecting roads carry records of their own.
 pub fn check(map: &Map) -> Vec<Finding> {
-    let mut out = Vec::new();
+    let (mut out, mut files) = (Vec::new(), Files::new());
     let old = map.header.rev_major == 1 && map.header.rev_minor < 8;
     for road in &map.roads {
         road_findings(road, &mut out);
         for record in &road.crg {
-            record_findings(record, &format!("road {}", road.id), Some(road.length), false, &mut out);
+            record_findings(record, &format!("road {}", road.id), Some(road.length), false, &mut files, &mut out);
         }
     }
     for junction in &map.junctions {
         let place = format!("junction {}", junction.id);
         for record in &junction.crg {
-            record_findings(record, &place, None, old, &mut out);
+            record_findings(record, &place, None, old, &mut files, &mut out);
         }
         if !junction.crg.is_empty() {
             for id in &junction.connecting_roads {

@@ -106,6 +106,8 @@ impl CrgPoints {
 pub(crate) struct Layer {
     pub record: CrgRecord,
     pub laid: Laid,
+    /// Whether the record is the road's junction's rather than the road's own.
+    pub of_junction: bool,
 }
 
 /// What evaluating a CRG record laid on a road needs, worked out once for every query:
@@ -134,8 +136,9 @@ enum Lay {
 }
 
 impl Layer {
-    /// `record`, whose file is `files`' `file`, laid on `road`.
-    pub fn new(record: &CrgRecord, file: usize, files: &CrgFiles, road: &Road) -> Layer {
+    /// `record`, whose file is `files`' `file`, laid on `road` (by its junction where
+    /// `of_junction`).
+    pub fn new(record: &CrgRecord, file: usize, files: &CrgFiles, road: &Road, of_junction: bool) -> Layer {
         let sign = if record.orientation == CrgOrientation::Opposite { -1.0 } else { 1.0 };
         let (s0, t0) = (record.s_offset, record.t_offset);
         let lay = match record.mode {
@@ -159,7 +162,7 @@ impl Layer {
         };
         let on_road = record.mode == CrgMode::Attached;
         let laid = Laid { file, lay, scale: record.z_scale, offset: record.z_offset, on_road };
-        Layer { record: record.clone(), laid }
+        Layer { record: record.clone(), laid, of_junction }
     }
 }
 

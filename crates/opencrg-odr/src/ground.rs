@@ -7,11 +7,12 @@
 
 use crate::crg::{self, CrgFiles, CrgPoints, Laid, Layer};
 use crate::locate::{Anchor, Footing, RoadIndex, RoadPos};
-use crate::map::{CrgPurpose, Map, Road};
+use crate::map::{CrgPurpose, Junction, Map, Road};
 use crate::patch::{layer_at, visible, Patch, Patches};
 use crate::surface::{height_across, span_height};
 use crate::trig;
 use opencrg::Result;
+use std::collections::BTreeMap;
 use std::path::Path;
 use std::sync::Arc;
 
@@ -55,14 +56,17 @@ impl Surface {
     pub fn new(map: Map) -> Result<Surface> {
         let files = CrgFiles::load(&map)?;
         let index = RoadIndex::new(&map);
+        let junctions: BTreeMap<&str, &Junction> = map.junctions.iter().map(|j| (j.id.as_str(), j)).collect();
         let layers = map
             .roads
             .iter()
             .map(|road| {
-                let junction = road.junction.as_ref().and_then(|j| map.junctions.iter().find(|x| &x.id == j));
-                let records = road.crg.iter().chain(junction.into_iter().flat_map(|j| &j.crg)).collect();
-                let records = visible(records).into_iter();
-                records.filter_map(|r| files.index(r).map(|k| Layer::new(r, k, &files, road))).collect::<Vec<_>>()
+                let junction = road.junction.as_deref().and_then(|j| junctions.get(j));
+                let own = road.crg.iter().map(|r| (r, false));
+                let records = own.chain(junction.into_iter().flat_map(|j| &j.crg).map(|r| (r, true))).collect();
+                let records = visible(records, |&(r, _)| r).into_iter();
+                let layer = |(r, of_junction)| files.index(r).map(|k| Layer::new(r, k, &files, road, of_junction));
+                records.filter_map(layer).collect::<Vec<_>>()
             })
             .collect::<Vec<_>>();
         let patches = map.roads.iter().zip(&layers).map(|(road, layers)| Patches::new(road, layers)).collect();
@@ -98,16 +102,18 @@ impl Surface {
     pub fn crg_outlines(self: &Arc<Self>) -> Vec<(usize, CrgPurpose, Vec<[f64; 3]>)> {
         let mut probe = self.probe();
         let mut out = Vec::new();
+        // A junction's records are drawn once, on the first of its roads.
+        let mut first_roads = BTreeMap::new();
         for (i, road) in self.map.roads.iter().enumerate() {
-            // A junction's records are drawn once, on the first of its roads.
-            let first_of_junction = road
-                .junction
-                .as_ref()
-                .is_none_or(|j| self.map.roads.iter().position(|r| r.junction.as_ref() == Some(j)) == Some(i));
+            if let Some(j) = &road.junction {
+                first_roads.entry(j.as_str()).or_insert(i);
+            }
+        }
+        for (i, road) in self.map.roads.iter().enumerate() {
+            let first_of_junction = road.junction.as_deref().is_none_or(|j| first_roads.get(j) == Some(&i));
             for layer in &self.layers[i] {
                 let record = &layer.record;
-                let own = road.crg.contains(record);
-                if !own && !first_of_junction {
+                if layer.of_junction && !first_of_junction {
                     continue;
                 }
                 let line = crg::outline(layer, &self.files.files[layer.laid.file], road);

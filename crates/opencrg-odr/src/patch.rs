@@ -116,11 +116,11 @@ fn order(x: f64) -> u64 {
 /// `records` (in the order they apply) less those that never hold: of each purpose the
 /// last record whose range holds s wins, so a record whose range later ones of its
 /// purpose cover is never seen (a junction's many records on every connecting road).
-pub(crate) fn visible(records: Vec<&CrgRecord>) -> Vec<&CrgRecord> {
+pub(crate) fn visible<T>(records: Vec<T>, record: impl Fn(&T) -> &CrgRecord) -> Vec<T> {
     // Per purpose, the union of the later records' ranges: disjoint ranges by start.
     let mut covered: [BTreeMap<u64, (f64, f64)>; 2] = Default::default();
     let mut keep = vec![false; records.len()];
-    for (i, r) in records.iter().enumerate().rev() {
+    for (i, r) in records.iter().map(&record).enumerate().rev() {
         let union = &mut covered[usize::from(r.purpose == CrgPurpose::Friction)];
         let (mut lo, mut hi) = (r.s_start, r.s_end);
         if union.range(..=order(lo)).next_back().is_some_and(|(_, &(_, end))| hi <= end) {
@@ -325,7 +325,7 @@ mod tests {
             }
             // The points are the ranges' ends and the halves between: every record that
             // holds anywhere holds at one of them.
-            let kept: Vec<usize> = visible(refs.clone()).iter().map(|r| r.line).collect();
+            let kept: Vec<usize> = visible(refs.clone(), |r| r).iter().map(|r| r.line).collect();
             let holding: Vec<usize> = (0..n).filter(|&i| seen[i]).collect();
             assert_eq!(kept, holding, "round {round}");
         }
