@@ -189,11 +189,14 @@ fn eval(path: &Path) -> Result<(), String> {
 }
 
 /// The extent of the map's roads (x0, y0, x1, y1), their lanes included, from their
-/// outermost borders every 2 m (at most 10,000 cross sections a road).
+/// outermost borders every 2 m (at most 10,000 cross sections a road, and about a million
+/// in all, shared by length).
 fn extent(map: &Map) -> Option<[f64; 4]> {
     let mut e = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
+    let total: f64 = map.roads.iter().map(|r| r.length).filter(|l| l.is_finite() && *l > 0.0).sum();
     for road in &map.roads {
-        let n = (road.length / 2.0).ceil().clamp(1.0, 10_000.0) as usize;
+        let share = if total > 0.0 { (1e6 * road.length / total).ceil() } else { 1.0 };
+        let n = (road.length / 2.0).ceil().min(share).clamp(1.0, 10_000.0) as usize;
         for k in 0..=n {
             let s = road.length * k as f64 / n as f64;
             let Some((section, ds)) = road.lanes.section_at(s) else { continue };
