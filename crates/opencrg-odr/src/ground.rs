@@ -6,9 +6,10 @@
 //! index, and its own contact points on the CRG files.
 
 use crate::crg::{self, CrgFiles, CrgPoints, Laid, Layer};
+use crate::last_wins::{layer_at, visible};
 use crate::locate::{Anchor, Footing, RoadIndex, RoadPos};
 use crate::map::{CrgPurpose, Junction, Map, Road};
-use crate::patch::{layer_at, visible, Patch, Patches};
+use crate::patch::{Patch, Patches};
 use crate::surface::{height_across, span_height};
 use crate::trig;
 use opencrg::Result;

@@ -23,6 +23,7 @@ mod crg;
 mod geometry;
 mod ground;
 mod lanes;
+mod last_wins;
 mod locate;
 mod map;
 mod mesh;
