@@ -193,7 +193,7 @@ fn eval(path: &Path) -> Result<(), String> {
 /// in all, shared by length).
 fn extent(map: &Map) -> Option<[f64; 4]> {
     let mut e = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
-    let total: f64 = map.roads.iter().map(|r| r.length).filter(|l| l.is_finite() && *l > 0.0).sum();
+    let total = map.length();
     for road in &map.roads {
         let share = if total > 0.0 { (1e6 * road.length / total).ceil() } else { 1.0 };
         let n = (road.length / 2.0).ceil().min(share).clamp(1.0, 10_000.0) as usize;

@@ -56,21 +56,19 @@ pub(crate) fn visible<T>(records: Vec<T>, record: impl Fn(&T) -> &CrgRecord) -> 
     for (i, r) in records.iter().map(&record).enumerate().rev() {
         let union = &mut covered[usize::from(r.purpose == CrgPurpose::Friction)];
         let (mut lo, mut hi) = (r.s_start, r.s_end);
-        if union.range(..=order(lo)).next_back().is_some_and(|(_, &(_, end))| hi <= end) {
-            continue;
-        }
-        keep[i] = true;
+        // The covered range starting last at or before lo: covering the record, or joined.
         if let Some((_, &(start, end))) = union.range(..=order(lo)).next_back() {
+            if hi <= end {
+                continue;
+            }
             if lo <= end {
                 lo = start;
-                hi = hi.max(end);
             }
         }
-        let within: Vec<u64> = union.range(order(lo)..=order(hi)).map(|(&k, _)| k).collect();
-        for k in within {
-            if let Some((_, end)) = union.remove(&k) {
-                hi = hi.max(end);
-            }
+        keep[i] = true;
+        while let Some((&key, &(_, end))) = union.range(order(lo)..=order(hi)).next() {
+            union.remove(&key);
+            hi = hi.max(end);
         }
         union.insert(order(lo), (lo, hi));
     }

@@ -63,8 +63,7 @@ impl RoadIndex {
     /// The index of `map`'s roads.
     pub fn new(map: &Map) -> RoadIndex {
         let mut stretches = Vec::new();
-        let total: f64 = map.roads.iter().map(|r| r.length).filter(|l| l.is_finite() && *l > 0.0).sum();
-        let longest = STRETCH.max(total / MAX_STRETCHES);
+        let longest = STRETCH.max(map.length() / MAX_STRETCHES);
         for (i, road) in map.roads.iter().enumerate() {
             if road.plan.is_empty() || !(road.length > 0.0) {
                 continue;

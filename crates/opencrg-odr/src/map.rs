@@ -171,4 +171,10 @@ impl Map {
     pub fn road_index(&self, id: &str) -> Option<usize> {
         self.by_id.get(id).copied()
     }
+
+    /// The roads' lengths added up (m), those that are not a positive number left out:
+    /// what the work of sampling the whole map is shared by.
+    pub fn length(&self) -> f64 {
+        self.roads.iter().map(|r| r.length).filter(|l| l.is_finite() && *l > 0.0).sum()
+    }
 }

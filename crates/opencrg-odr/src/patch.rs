@@ -6,7 +6,7 @@
 //! (tested below), which serve the points within rounding of a cut.
 
 use crate::crg::{Laid, Layer};
-use crate::lanes::{find_lane, Edge};
+use crate::lanes::{find_lane, Edge, Lane, LaneSection};
 use crate::last_wins::last_holding;
 use crate::map::{CrgPurpose, CrgRecord, Road};
 use crate::profile::Cubic;
@@ -110,14 +110,13 @@ impl Patches {
                 (lo < hi).then_some((lo, hi, at))
             })
             .collect();
+        let sections: Vec<_> = spans.iter().map(|&(.., at)| lanes.section_at(at)).collect();
         // Each patch keeps its section's lanes: many lanes times many cuts (a file made to
         // blow up) would take memory out of all proportion to the file, so beyond a bound
         // proportional to the road's own records it answers from those records instead.
-        let lanes_kept: usize = spans
-            .iter()
-            .map(|&(.., at)| lanes.section_at(at).map_or(0, |(sec, _)| sec.left.len() + sec.right.len()))
-            .sum();
-        let own = cuts.len() + lanes.sections.iter().map(|sec| sec.left.len() + sec.right.len()).sum::<usize>();
+        let count = |sec: &LaneSection| sec.left.len() + sec.right.len();
+        let lanes_kept: usize = sections.iter().flatten().map(|&(sec, _)| count(sec)).sum();
+        let own = cuts.len() + lanes.sections.iter().map(count).sum::<usize>();
         let mut out = Patches::default();
         if lanes_kept > MAX_LANES_PER_RECORD * own + 1000 {
             return out;
@@ -125,18 +124,24 @@ impl Patches {
         let records: Vec<&CrgRecord> = layers.iter().map(|l| &l.record).collect();
         let [elevation, friction] = [CrgPurpose::Elevation, CrgPurpose::Friction]
             .map(|p| last_holding(&records, p, spans.iter().map(|&(.., at)| at)));
-        for (k, (lo, hi, at)) in spans.into_iter().enumerate() {
+        for (k, ((lo, hi, at), section)) in spans.into_iter().zip(sections).enumerate() {
             let crg = [elevation[k], friction[k]].map(|i| i.map(|i| layers[i].laid));
-            out.push(road, lo, hi, at, crg);
+            out.push(road, (lo, hi, at), section, crg);
         }
         out
     }
 
-    /// Adds the patch between `lo` and `hi`, its records those holding at `at`, its CRG
-    /// layers `crg` (elevation, friction).
-    fn push(&mut self, road: &Road, lo: f64, hi: f64, at: f64, crg: [Option<Laid>; 2]) {
-        let section = road.lanes.section_at(at);
-        let mut side = |lanes: &[crate::lanes::Lane], ds: f64| {
+    /// Adds the patch between `lo` and `hi`, its records those holding at `at`: the lane
+    /// section `section` (with `at` less its start) and the CRG layers `crg` (elevation,
+    /// friction).
+    fn push(
+        &mut self,
+        road: &Road,
+        (lo, hi, at): (f64, f64, f64),
+        section: Option<(&LaneSection, f64)>,
+        crg: [Option<Laid>; 2],
+    ) {
+        let mut side = |lanes: &[Lane], ds: f64| {
             let first = self.lanes.len();
             self.lanes.extend(lanes.iter().map(|lane| PatchLane {
                 id: lane.id,

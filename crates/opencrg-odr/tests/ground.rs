@@ -89,6 +89,25 @@ const A: f64 = 0.01;
 const B: f64 = -0.02;
 const C: f64 = 0.05;
 
+/// One lane section: a driving lane `width` wide each side of the centre, of friction
+/// `friction`.
+fn lanes(width: f64, friction: f64) -> String {
+    let lane = |id: i32| {
+        format!(
+            r#"<lane id="{id}" type="driving"><width sOffset="0" a="{width}" b="0" c="0" d="0"/><material sOffset="0" friction="{friction}"/></lane>"#
+        )
+    };
+    format!(
+        r#"<lanes><laneSection s="0">
+<left>{}</left>
+<center><lane id="0" type="none"/></center>
+<right>{}</right>
+</laneSection></lanes>"#,
+        lane(1),
+        lane(-1)
+    )
+}
+
 /// A straight road 100 m long along heading 0.4 from (10, 20), climbing at 0.05 and
 /// superelevated by 0.04 rad, one lane of 4 m each side with friction 0.7, and `records`.
 fn map_with(dir: &Path, records: &str) -> Arc<Surface> {
@@ -99,13 +118,10 @@ fn map_with(dir: &Path, records: &str) -> Arc<Surface> {
 <planView><geometry s="0" x="10" y="20" hdg="0.4" length="100"><line/></geometry></planView>
 <elevationProfile><elevation s="0" a="2" b="0.05" c="0" d="0"/></elevationProfile>
 <lateralProfile><superelevation s="0" a="0.04" b="0" c="0" d="0"/></lateralProfile>
-<lanes><laneSection s="0">
-<left><lane id="1" type="driving"><width sOffset="0" a="4" b="0" c="0" d="0"/><material sOffset="0" friction="0.7"/></lane></left>
-<center><lane id="0" type="none"/></center>
-<right><lane id="-1" type="driving"><width sOffset="0" a="4" b="0" c="0" d="0"/><material sOffset="0" friction="0.7"/></lane></right>
-</laneSection></lanes>
+{lanes}
 <surface>{records}</surface>
-</road></OpenDRIVE>"#
+</road></OpenDRIVE>"#,
+        lanes = lanes(4.0, 0.7)
     );
     let path = dir.join("map.xodr");
     std::fs::write(&path, text).unwrap();
@@ -334,11 +350,7 @@ fn a_wheel_moving_in_small_steps_is_found_as_a_fresh_search_finds_it() {
 /// Two roads end to end, the second a connecting road of junction `j` whose records are
 /// `junction_records`; the connecting road carries `own` records.
 fn junction_map(dir: &Path, junction_records: &str, own: &str) -> Map {
-    let lanes = r#"<lanes><laneSection s="0">
-<left><lane id="1" type="driving"><width sOffset="0" a="3" b="0" c="0" d="0"/><material sOffset="0" friction="0.8"/></lane></left>
-<center><lane id="0" type="none"/></center>
-<right><lane id="-1" type="driving"><width sOffset="0" a="3" b="0" c="0" d="0"/><material sOffset="0" friction="0.8"/></lane></right>
-</laneSection></lanes>"#;
+    let lanes = lanes(3.0, 0.8);
     let text = format!(
         r#"<?xml version="1.0"?>
 <OpenDRIVE><header revMajor="1" revMinor="6"/>
