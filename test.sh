@@ -4,7 +4,8 @@
 # crates as published (the rust-version's toolchain, `cargo package`), a short run of
 # every fuzz target, the OpenDRIVE geometry against libOpenDRIVE and its CRG
 # records against the reference C library, then
-# through CTest the C tests (also under the sanitizers and valgrind), the header and
+# the instruction guard of the hot calls (callgrind against a kept baseline), through
+# CTest the C tests (also under the sanitizers and valgrind), the header and
 # symbol checks, the CMake consumer project, the conformance suite in both behaviour
 # profiles (.so and .a) and the differential tester; the same C tests and conformance
 # suite on Windows (MinGW-w64 build under wine, with the zip's CMake package and MSVC
@@ -61,6 +62,9 @@ OPENCRG_CRG_REFERENCE="$PWD/target/crgref/answers" \
     cargo test --release -p opencrg-odr --test crg_reference -- --include-ignored --nocapture
 step "C tests"
 cargo build --release -p opencrg-capi -p opencrg-cli
+# The instructions of the hot calls (path, u/v, map wheel, loading) against the baseline
+# kept in c-tests/instructions: a change that adds work to one fails here.
+c-tests/instructions/run.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"
 ctest --test-dir build --output-on-failure -j"$(nproc)"

@@ -33,17 +33,17 @@ struct Road {
 /* u/v to x/y on a contact point: crgEvaluv2xy or a pointer to it. */
 typedef int (*Uv2xy)(int, double, double, double *, double *);
 
-static double weave(double u) { return WEAVE * sin(2.0 * M_PI * u / WEAVE_LENGTH); }
+static inline double weave(double u) { return WEAVE * sin(2.0 * M_PI * u / WEAVE_LENGTH); }
 
 /* The u of the rear axle after driving `s` metres from the road's start (laps). */
-static double rear_u(const struct Road *r, double s)
+static inline double rear_u(const struct Road *r, double s)
 {
     double drivable = r->umax - r->umin - WHEELBASE - 2 * MARGIN;
     return r->umin + MARGIN + fmod(s, drivable);
 }
 
 /* Fills `p` with `steps` steps at `speed` from odometer reading `s0`. */
-static void drive(const struct Road *r, struct Path *p, double s0, double speed, long steps, Uv2xy uv2xy, int cp)
+static inline void drive(const struct Road *r, struct Path *p, double s0, double speed, long steps, Uv2xy uv2xy, int cp)
 {
     for (long k = 0; k < steps; k++) {
         double ur = rear_u(r, s0 + speed * DT * (double)k), uf = ur + WHEELBASE;
@@ -58,7 +58,7 @@ static void drive(const struct Road *r, struct Path *p, double s0, double speed,
     }
 }
 
-static void path_alloc(struct Path *p, long steps)
+static inline void path_alloc(struct Path *p, long steps)
 {
     size_t n = (size_t)steps * WHEELS;
     p->u = malloc(n * sizeof(double));
@@ -67,7 +67,7 @@ static void path_alloc(struct Path *p, long steps)
     p->y = malloc(n * sizeof(double));
 }
 
-static void path_free(struct Path *p)
+static inline void path_free(struct Path *p)
 {
     free(p->u);
     free(p->v);
@@ -76,7 +76,7 @@ static void path_free(struct Path *p)
 }
 
 /* Order of doubles, for qsort. */
-static int cmp_double(const void *a, const void *b)
+static inline int cmp_double(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;
     return (x > y) - (x < y);
@@ -84,7 +84,7 @@ static int cmp_double(const void *a, const void *b)
 
 /* Whether `word` is one of the comma-separated words of the environment variable `var`
  * (every word when it is not set): how the programs' cases are chosen. */
-static int chosen(const char *var, const char *word)
+static inline int chosen(const char *var, const char *word)
 {
     const char *list = getenv(var);
     if (!list)
@@ -100,7 +100,7 @@ static int chosen(const char *var, const char *word)
 }
 
 /* `chosen` for a number, written as printf's %g writes it. */
-static int number_chosen(const char *var, double number)
+static inline int number_chosen(const char *var, double number)
 {
     char word[32];
     snprintf(word, sizeof word, "%g", number);

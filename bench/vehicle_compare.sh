@@ -10,8 +10,9 @@
 #   OTHER_INCLUDE_DIR   the folder holding its crgBaseLib.h
 # Environment: ROADS (default target/bench-roads), RUNS (alternating runs per road,
 # default 5), STEPS (steps per pass, default 50000), ROAD_FILES (default: the straight
-# 80 MB road and the winding road with slope and banking), VB_* (passed to the program,
-# see bench/vehicle_bench.c), MARKDOWN=1 for Markdown tables, RESULTS=FILE to keep every
+# 80 MB road and the winding road with slope and banking), CALLS (default: xy2z xy2uv
+# xy2pk uv2z), PARTS (single: one thread; threads: 8 and 16; default both), VB_* (passed
+# to the program, see bench/vehicle_bench.c), MARKDOWN=1 for Markdown tables, RESULTS=FILE to keep every
 # run's lines (bench/vehicle_report.py FILE summarises them again).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,8 +30,8 @@ files=${ROAD_FILES:-"track_500m_krbi winding_sloped_banked_2km_krbi"}
 # hit both.
 for f in $files; do
     for r in $(seq "$runs"); do
-        for call in xy2z xy2uv xy2pk uv2z; do
-            for part in single threads; do
+        for call in ${CALLS:-xy2z xy2uv xy2pk uv2z}; do
+            for part in ${PARTS:-single threads}; do
                 for l in "${libs[@]}"; do
                     if [ $part = single ]; then sel=(VB_THREADS=none); else sel=(VB_SPEEDS=none); fi
                     env VB_CALLS=$call "${sel[@]}" "$out/vehicle_$l" "$roads/$f.crg" "$steps" |
