@@ -9,6 +9,7 @@ use crate::alloc;
 use crate::c_path;
 use crate::msg;
 use crate::panic::guard;
+use crate::perf_stat::counted;
 use crate::profile;
 use crate::ptr::{in_str, input, out};
 use crate::registry;
@@ -788,16 +789,18 @@ fn eval1(
 /// `u` and `v` are null or point to a double each.
 #[no_mangle]
 pub unsafe extern "C" fn crgEvalxy2uv(cpId: c_int, x: f64, y: f64, u: *mut f64, v: *mut f64) -> c_int {
-    // SAFETY: the contract above.
-    let (Some(u), Some(v)) = (unsafe { (out(u), out(v)) }) else { return 0 };
-    // The common case first, as in `crgEvaluv2z`: the owner's way, the lean search.
-    match registry::with_owned_cp_mut(cpId, |cp| cp.xy_to_uv_lean(x, y)) {
-        Some(Some(found)) => {
-            (*u, *v) = found;
-            1
+    counted!(cpId, {
+        // SAFETY: the contract above.
+        let (Some(u), Some(v)) = (unsafe { (out(u), out(v)) }) else { return 0 };
+        // The common case first, as in `crgEvaluv2z`: the owner's way, the lean search.
+        match registry::with_owned_cp_mut(cpId, |cp| cp.xy_to_uv_lean(x, y)) {
+            Some(Some(found)) => {
+                (*u, *v) = found;
+                1
+            }
+            declined => xy2uv_general(cpId, declined.is_some(), x, y, u, v),
         }
-        declined => xy2uv_general(cpId, declined.is_some(), x, y, u, v),
-    }
+    })
 }
 
 /// `crgEvalxy2uv` for every case but the common one; `declined`: the lean search was
@@ -823,9 +826,11 @@ fn search_xy(cp: &mut ContactPoint, declined: bool, x: f64, y: f64) -> opencrg::
 /// `x` and `y` are null or point to a double each.
 #[no_mangle]
 pub unsafe extern "C" fn crgEvaluv2xy(cpId: c_int, u: f64, v: f64, x: *mut f64, y: *mut f64) -> c_int {
-    // SAFETY: the contract above.
-    let (x, y) = unsafe { (out(x), out(y)) };
-    eval2("crgEvaluv2xy", cpId, x, y, |cp| cp.uv_to_xy(u, v))
+    counted!(cpId, {
+        // SAFETY: the contract above.
+        let (x, y) = unsafe { (out(x), out(y)) };
+        eval2("crgEvaluv2xy", cpId, x, y, |cp| cp.uv_to_xy(u, v))
+    })
 }
 
 /// u/v to z.
@@ -834,16 +839,18 @@ pub unsafe extern "C" fn crgEvaluv2xy(cpId: c_int, u: f64, v: f64, x: *mut f64, 
 /// `z` is null or points to a double.
 #[no_mangle]
 pub unsafe extern "C" fn crgEvaluv2z(cpId: c_int, u: f64, v: f64, z: *mut f64) -> c_int {
-    // SAFETY: the contract above.
-    let Some(z) = (unsafe { out(z) }) else { return 0 };
-    // The common case first: the calling thread owns the contact point and (u, v) is
-    // inside the road. Nothing in it can panic, so it needs no guard, and it makes no
-    // call, which keeps it short; everything else takes the general way below.
-    if let Some(Some(value)) = registry::with_owned_cp_mut(cpId, |cp| cp.uv_to_z_plain(u, v)) {
-        *z = value;
-        return 1;
-    }
-    uv2z_general(cpId, u, v, z)
+    counted!(cpId, {
+        // SAFETY: the contract above.
+        let Some(z) = (unsafe { out(z) }) else { return 0 };
+        // The common case first: the calling thread owns the contact point and (u, v) is
+        // inside the road. Nothing in it can panic, so it needs no guard, and it makes no
+        // call, which keeps it short; everything else takes the general way below.
+        if let Some(Some(value)) = registry::with_owned_cp_mut(cpId, |cp| cp.uv_to_z_plain(u, v)) {
+            *z = value;
+            return 1;
+        }
+        uv2z_general(cpId, u, v, z)
+    })
 }
 
 /// `crgEvaluv2z` for every case but the common one (its own function, so that the
@@ -859,21 +866,23 @@ fn uv2z_general(cpId: c_int, u: f64, v: f64, z: &mut f64) -> c_int {
 /// `z` is null or points to a double.
 #[no_mangle]
 pub unsafe extern "C" fn crgEvalxy2z(cpId: c_int, x: f64, y: f64, z: *mut f64) -> c_int {
-    // SAFETY: the contract above.
-    let Some(z) = (unsafe { out(z) }) else { return 0 };
-    // The common case first (see `crgEvalxy2uv`); a search done the lean way whose
-    // elevation needs the general way continues from the (u, v) it found.
-    match registry::with_owned_cp_mut(cpId, |cp| {
-        let (u, v) = cp.xy_to_uv_lean(x, y)?;
-        Some(cp.uv_to_z_plain(u, v).ok_or((u, v)))
-    }) {
-        Some(Some(Ok(value))) => {
-            *z = value;
-            1
+    counted!(cpId, {
+        // SAFETY: the contract above.
+        let Some(z) = (unsafe { out(z) }) else { return 0 };
+        // The common case first (see `crgEvalxy2uv`); a search done the lean way whose
+        // elevation needs the general way continues from the (u, v) it found.
+        match registry::with_owned_cp_mut(cpId, |cp| {
+            let (u, v) = cp.xy_to_uv_lean(x, y)?;
+            Some(cp.uv_to_z_plain(u, v).ok_or((u, v)))
+        }) {
+            Some(Some(Ok(value))) => {
+                *z = value;
+                1
+            }
+            Some(Some(Err((u, v)))) => eval1("crgEvalxy2z", cpId, Some(z), |cp| cp.z_of_found(u, v)),
+            declined => xy2z_general(cpId, declined.is_some(), x, y, z),
         }
-        Some(Some(Err((u, v)))) => eval1("crgEvalxy2z", cpId, Some(z), |cp| cp.z_of_found(u, v)),
-        declined => xy2z_general(cpId, declined.is_some(), x, y, z),
-    }
+    })
 }
 
 /// `crgEvalxy2z` for every case but the common one (see `xy2uv_general`).
@@ -891,9 +900,11 @@ fn xy2z_general(cpId: c_int, declined: bool, x: f64, y: f64, z: &mut f64) -> c_i
 /// `phi` and `curv` are null or point to a double each.
 #[no_mangle]
 pub unsafe extern "C" fn crgEvaluv2pk(cpId: c_int, u: f64, v: f64, phi: *mut f64, curv: *mut f64) -> c_int {
-    // SAFETY: the contract above.
-    let (phi, curv) = unsafe { (out(phi), out(curv)) };
-    eval2("crgEvaluv2pk", cpId, phi, curv, |cp| cp.uv_to_pk(u, v))
+    counted!(cpId, {
+        // SAFETY: the contract above.
+        let (phi, curv) = unsafe { (out(phi), out(curv)) };
+        eval2("crgEvaluv2pk", cpId, phi, curv, |cp| cp.uv_to_pk(u, v))
+    })
 }
 
 /// x/y to heading and curvature.
@@ -902,16 +913,18 @@ pub unsafe extern "C" fn crgEvaluv2pk(cpId: c_int, u: f64, v: f64, phi: *mut f64
 /// `phi` and `curv` are null or point to a double each.
 #[no_mangle]
 pub unsafe extern "C" fn crgEvalxy2pk(cpId: c_int, x: f64, y: f64, phi: *mut f64, curv: *mut f64) -> c_int {
-    // SAFETY: the contract above.
-    let (Some(phi), Some(curv)) = (unsafe { (out(phi), out(curv)) }) else { return 0 };
-    // The search the lean way where it applies (see `crgEvalxy2uv`), then heading and
-    // curvature at what it found, inside the guard.
-    let found = registry::with_owned_cp_mut(cpId, |cp| cp.xy_to_uv_lean(x, y));
-    eval2("crgEvalxy2pk", cpId, Some(phi), Some(curv), |cp| {
-        let (u, v) = match found {
-            Some(Some(found)) => found,
-            declined => search_xy(cp, declined.is_some(), x, y)?,
-        };
-        cp.uv_to_pk(u, v)
+    counted!(cpId, {
+        // SAFETY: the contract above.
+        let (Some(phi), Some(curv)) = (unsafe { (out(phi), out(curv)) }) else { return 0 };
+        // The search the lean way where it applies (see `crgEvalxy2uv`), then heading and
+        // curvature at what it found, inside the guard.
+        let found = registry::with_owned_cp_mut(cpId, |cp| cp.xy_to_uv_lean(x, y));
+        eval2("crgEvalxy2pk", cpId, Some(phi), Some(curv), |cp| {
+            let (u, v) = match found {
+                Some(Some(found)) => found,
+                declined => search_xy(cp, declined.is_some(), x, y)?,
+            };
+            cp.uv_to_pk(u, v)
+        })
     })
 }

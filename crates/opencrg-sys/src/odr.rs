@@ -70,7 +70,7 @@ pub extern "C" fn crgOdrMapRelease(mapId: c_int) -> c_int {
             index.and_then(|i| maps.get_mut(i)).and_then(Option::take).is_some()
         };
         if released {
-            PROBES.delete_of(Some(mapId));
+            PROBES.delete_of(Some(mapId), |_| {});
         }
         c_int::from(released)
     })
@@ -98,7 +98,7 @@ pub extern "C" fn crgOdrProbeCreate(mapId: c_int) -> c_int {
 /// Releases a probe; 1, or 0 for an unknown id.
 #[no_mangle]
 pub extern "C" fn crgOdrProbeRelease(probeId: c_int) -> c_int {
-    guard("crgOdrProbeRelease", 0, || c_int::from(PROBES.delete(probeId)))
+    guard("crgOdrProbeRelease", 0, || c_int::from(PROBES.delete(probeId).is_some()))
 }
 
 /// The ground at the world point (x, y): the surface's height with the CRG records laid

@@ -8,6 +8,7 @@ use crate::lock::lock;
 use crate::slots::Slots;
 use opencrg::{ContactPoint, Road};
 use std::ffi::c_int;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 
 /// A loaded data set.
@@ -41,20 +42,20 @@ pub struct PerfStat {
     pub longest: u64,
 }
 
-impl CpEntry {
-    /// Runs `f` on the contact point, counted when the statistics are active.
-    #[inline(always)]
-    fn run<R>(&mut self, f: impl FnOnce(&mut ContactPoint) -> R) -> R {
-        if !self.stats.active {
-            return f(&mut self.cp);
-        }
-        let start = std::time::Instant::now();
-        let r = f(&mut self.cp);
-        let took = u64::try_from(start.elapsed().as_nanos()).unwrap_or(u64::MAX);
-        self.stats.calls += 1;
-        self.stats.nanos = self.stats.nanos.saturating_add(took);
-        self.stats.longest = self.stats.longest.max(took);
-        r
+/// How many contact points have active statistics: the evaluation calls take the counted
+/// way only while there is one.
+static COUNTED_CPS: AtomicUsize = AtomicUsize::new(0);
+
+/// Whether any contact point's calls are being counted.
+#[inline(always)]
+pub fn counting() -> bool {
+    COUNTED_CPS.load(Ordering::Relaxed) != 0
+}
+
+/// Forgets the statistics of a contact point that is deleted.
+fn forget_stats(e: &CpEntry) {
+    if e.stats.active {
+        COUNTED_CPS.fetch_sub(1, Ordering::Relaxed);
     }
 }
 
@@ -115,16 +116,33 @@ pub fn create_cp(dataset: c_int) -> c_int {
 /// Runs `f` on a contact point; `None` for an unknown id.
 #[inline]
 pub fn with_cp<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R) -> Option<R> {
-    CPS.with_mut(id, |e| e.run(f))
+    CPS.with_mut(id, |e| f(&mut e.cp))
 }
 
 /// Changes the performance statistics of a contact point (`f` on them) and gives them;
 /// `None` for an unknown id.
 pub fn perf_stat(id: c_int, f: impl FnOnce(&mut PerfStat)) -> Option<PerfStat> {
     CPS.with_mut(id, |e| {
+        let was_active = e.stats.active;
         f(&mut e.stats);
+        match (was_active, e.stats.active) {
+            (false, true) => COUNTED_CPS.fetch_add(1, Ordering::Relaxed),
+            (true, false) => COUNTED_CPS.fetch_sub(1, Ordering::Relaxed),
+            _ => 0,
+        };
         e.stats
     })
+}
+
+/// Adds one call that took `nanos` to a contact point's statistics, when they are active.
+pub fn count_call(id: c_int, nanos: u64) {
+    CPS.with_mut(id, |e| {
+        if e.stats.active {
+            e.stats.calls += 1;
+            e.stats.nanos = e.stats.nanos.saturating_add(nanos);
+            e.stats.longest = e.stats.longest.max(nanos);
+        }
+    });
 }
 
 /// Runs `f` on a contact point when this thread owns it; `None` (without running
@@ -132,12 +150,12 @@ pub fn perf_stat(id: c_int, f: impl FnOnce(&mut PerfStat)) -> Option<PerfStat> {
 /// call. `f` must not panic (this runs outside any panic guard).
 #[inline(always)]
 pub fn with_owned_cp_mut<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R) -> Option<R> {
-    CPS.with_owned_mut(id, |e| e.run(f))
+    CPS.with_owned_mut(id, |e| f(&mut e.cp))
 }
 
 /// Deletes one contact point.
 pub fn delete_cp(id: c_int) -> bool {
-    CPS.delete(id)
+    CPS.delete(id).inspect(forget_stats).is_some()
 }
 
 /// Runs `f` on every contact point of a data set (`None`: of every data set).
@@ -147,7 +165,7 @@ fn for_each_cp_of(dataset: Option<c_int>, mut f: impl FnMut(&mut ContactPoint)) 
 
 /// Deletes the contact points of one data set, or all of them (and empties the table).
 pub fn delete_cps_of(dataset: Option<c_int>) {
-    CPS.delete_of(dataset);
+    CPS.delete_of(dataset, forget_stats);
 }
 
 /// Applies `f` to every contact point.
@@ -203,6 +221,27 @@ mod tests {
         assert_eq!(with_cp(id, |cp| counter(cp)), Some(f64::from(OWNER_STREAK + 1)));
         assert!(delete_cp(id));
         assert_eq!(with_cp(id, |cp| counter(cp)), None);
+    }
+
+    #[test]
+    fn the_counted_way_is_taken_while_a_contact_point_counts() {
+        // Other tests run in parallel but never activate statistics.
+        let (a, b) = (new_cp(), new_cp());
+        assert!(!counting());
+        perf_stat(a, |s| s.active = true);
+        perf_stat(b, |s| s.active = true);
+        perf_stat(b, |s| s.active = true);
+        assert_eq!(COUNTED_CPS.load(Ordering::Relaxed), 2, "activating twice counts once");
+        count_call(a, 40);
+        count_call(a, 60);
+        assert_eq!(perf_stat(a, |_| {}).map(|s| (s.calls, s.nanos, s.longest)), Some((2, 100, 60)));
+        perf_stat(a, |s| s.active = false);
+        count_call(a, 40);
+        assert_eq!(perf_stat(a, |_| {}).map(|s| s.calls), Some(2), "not counted while inactive");
+        assert!(counting(), "b still counts");
+        assert!(delete_cp(b));
+        assert!(!counting(), "deleting a counting contact point ends the counted way");
+        assert!(delete_cp(a));
     }
 
     #[test]

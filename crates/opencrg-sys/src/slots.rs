@@ -110,15 +110,14 @@ impl<T: Send> Slots<T> {
         self.slot_of(id)?.cell.with_owned_mut(|v| v.as_mut().map(f)).flatten()
     }
 
-    /// Deletes one object; whether there was one.
-    pub(crate) fn delete(&self, id: c_int) -> bool {
+    /// Deletes one object; gives it back (dropped after the table is unlocked).
+    pub(crate) fn delete(&self, id: c_int) -> Option<T> {
         let mut ids = lock(&self.ids);
-        let Some((id, s)) = usize::try_from(id).ok().and_then(|i| Some((i, self.slot(i)?))) else { return false };
+        let (id, s) = usize::try_from(id).ok().and_then(|i| Some((i, self.slot(i)?)))?;
         if s.parent.load(Ordering::Relaxed) == 0 {
-            return false;
+            return None;
         }
-        free_slot(&mut ids, id, s);
-        true
+        free_slot(&mut ids, id, s)
     }
 
     /// Runs `f` on every object made from `parent` (`None`: on every object).
@@ -135,14 +134,17 @@ impl<T: Send> Slots<T> {
         }
     }
 
-    /// Deletes the objects made from `parent`, or all of them (and empties the table).
-    pub(crate) fn delete_of(&self, parent: Option<c_int>) {
+    /// Deletes the objects made from `parent`, or all of them (and empties the table),
+    /// showing each to `deleted` first.
+    pub(crate) fn delete_of(&self, parent: Option<c_int>, mut deleted: impl FnMut(&T)) {
         let mut ids = lock(&self.ids);
         for i in 0..ids.size {
             let Some(s) = self.slot(i) else { continue };
             let p = s.parent.load(Ordering::Relaxed);
             if p != 0 && parent.is_none_or(|want| want == p) {
-                free_slot(&mut ids, i, s);
+                if let Some(v) = free_slot(&mut ids, i, s) {
+                    deleted(&v);
+                }
             }
         }
         if parent.is_none() {
@@ -152,13 +154,14 @@ impl<T: Send> Slots<T> {
     }
 }
 
-/// Empties a slot that holds an object (the table's lock is held).
-fn free_slot<T>(ids: &mut Ids, id: usize, s: &Slot<T>) {
+/// Empties a slot that holds an object (the table's lock is held); the object.
+fn free_slot<T>(ids: &mut Ids, id: usize, s: &Slot<T>) -> Option<T> {
     let mut guard = s.cell.lock();
-    *guard = None;
+    let value = guard.take();
     s.parent.store(0, Ordering::Relaxed);
     // The slot starts over without an owner.
     guard.disown();
     drop(guard);
     ids.free.insert(id);
+    value
 }
