@@ -160,7 +160,7 @@ enum Command {
     },
     #[command(flatten)]
     Make(make::MakeCommand),
-    /// OpenDRIVE maps with CRG surfaces: info, check, eval, render.
+    /// OpenDRIVE maps with CRG surfaces: info, check, eval, render, export, view.
     #[command(subcommand)]
     Odr(odr::OdrCommand),
 }

@@ -6,6 +6,7 @@ use crate::export::parse_range;
 use crate::{expr, load, Format};
 use clap::{ArgGroup, Args, Subcommand};
 use opencrg::tools::{self, ChannelAction, Filter, Import, Layout, LineChannel};
+use opencrg::units::Metres;
 use opencrg::{Budget, ContactPoint, DataFormat, Road};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -127,6 +128,9 @@ pub enum MakeCommand {
         /// Fill the nodes without points from their neighbours.
         #[arg(long)]
         fill_nan: bool,
+        /// Use only the points within X0:X1,Y0:Y1 [m] (to leave out stray points).
+        #[arg(long, value_name = "X0:X1,Y0:Y1", allow_hyphen_values = true)]
+        crop: Option<String>,
         #[command(flatten)]
         format: OutputFormat,
     },
@@ -204,6 +208,15 @@ impl Action {
     }
 }
 
+/// An area given as `X0:X1,Y0:Y1`.
+fn parse_crop(text: &str) -> Result<[(f64, f64); 2], String> {
+    let bad = || format!("--crop '{text}': expected X0:X1,Y0:Y1 in metres");
+    let (x, y) = text.split_once(',').ok_or_else(bad)?;
+    let x = parse_range(Some(x), "crop")?.ok_or_else(bad)?;
+    let y = parse_range(Some(y), "crop")?.ok_or_else(bad)?;
+    Ok([x, y])
+}
+
 fn data_format(f: Option<Format>, default: DataFormat) -> DataFormat {
     f.map_or(default, DataFormat::from)
 }
@@ -212,13 +225,15 @@ fn data_format(f: Option<Format>, default: DataFormat) -> DataFormat {
 fn save(road: &Road, out: &Path, format: DataFormat) -> Result<(), String> {
     opencrg::write(road, out, format).map_err(|e| e.to_string())?;
     let (nu, nv) = (road.grid().nu, road.grid().nv);
-    let (u0, u1) = road.u_range();
+    let ((u0, u1), (v0, v1)) = (road.u_range(), road.v_range());
     eprintln!(
-        "wrote {} ({}): {nu} x {nv} nodes, u {u0} to {u1} m, v {} to {} m",
+        "wrote {} ({}): {nu} x {nv} nodes, u {} to {} m, v {} to {} m",
         out.display(),
         format.name(),
-        road.v_range().0,
-        road.v_range().1
+        Metres(u0),
+        Metres(u1),
+        Metres(v0),
+        Metres(v1)
     );
     Ok(())
 }
@@ -310,12 +325,13 @@ pub fn run(command: MakeCommand, budget: &Budget) -> Result<std::process::ExitCo
             .map_err(named(&refline))?;
             save(&made, &output, data_format(format.format, DataFormat::Kdbi))?;
         }
-        MakeCommand::Import { cloud, output, refline, width, grid, max_edge, fill_nan, format } => {
+        MakeCommand::Import { cloud, output, refline, width, grid, max_edge, fill_nan, crop, format } => {
+            let crop = crop.as_deref().map(parse_crop).transpose()?;
             let bar = progress_bar();
             bar.set_message("reading");
             let points = tools::read_points(&cloud).map_err(|e| e.to_string())?;
             let refline = refline.map(|l| tools::read_points(&l).map_err(|e| e.to_string())).transpose()?;
-            let how = Import { refline, width, u_inc: grid.u_inc, v_inc: grid.v_inc, max_edge, fill: fill_nan };
+            let how = Import { refline, width, u_inc: grid.u_inc, v_inc: grid.v_inc, max_edge, fill: fill_nan, crop };
             let started = std::time::Instant::now();
             let made = tools::import(
                 &points,

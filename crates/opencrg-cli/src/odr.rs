@@ -189,7 +189,7 @@ fn eval(path: &Path) -> Result<(), String> {
 }
 
 /// The extent of the map's roads (x0, y0, x1, y1), their lanes included, from their
-/// outermost borders every 2 m (at most 10,000 cross sections a road, and about a million
+/// outermost borders (and the lane offset) every 2 m (at most 10,000 cross sections a road, and about a million
 /// in all, shared by length).
 fn extent(map: &Map) -> Option<[f64; 4]> {
     let mut e = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
@@ -202,7 +202,9 @@ fn extent(map: &Map) -> Option<[f64; 4]> {
             let Some((section, ds)) = road.lanes.section_at(s) else { continue };
             let offset = road.lanes.offset.at(s);
             let ts = [true, false].into_iter().flat_map(|left| section.spans(left, ds, offset).last().map(|l| l.outer));
-            for t in ts.chain([0.0]) {
+            // The lanes start at the lane offset, which may lie beyond the reference line
+            // on a road with lanes on one side only.
+            for t in ts.chain([0.0, offset]) {
                 let [x, y, _] = road.surface_point(s, t);
                 if x.is_finite() && y.is_finite() {
                     e = [e[0].min(x), e[1].min(y), e[2].max(x), e[3].max(y)];
@@ -221,9 +223,9 @@ fn render(path: &Path, output: &Path, size: usize, budget: &Budget) -> Result<()
         ));
     }
     let surface = Arc::new(Surface::load(path).map_err(|e| e.to_string())?);
-    let [x0, y0, x1, y1] = extent(surface.map()).ok_or_else(|| format!("{}: no road to draw", path.display()))?;
-    let px = (x1 - x0).max(y1 - y0).max(1e-6) / size as f64;
-    let (mw, mh) = ((((x1 - x0) / px).ceil() as usize).max(1), (((y1 - y0) / px).ceil() as usize).max(1));
+    let e = extent(surface.map()).ok_or_else(|| format!("{}: no road to draw", path.display()))?;
+    let crate::render::RasterFrame { px, west: x0, north: y1, width: mw, height: mh } =
+        crate::render::RasterFrame::around(e, size);
     let request = format!("a map picture of {mw} x {mh} px");
     budget.admit(&request, mw as f64 * mh as f64, "pixels", crate::render::PIXEL_BYTES).map_err(|e| e.to_string())?;
     let bar = indicatif::ProgressBar::new(mh as u64);

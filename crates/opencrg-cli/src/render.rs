@@ -61,10 +61,8 @@ pub fn top_view(
             }
         }
     }
-    let extent = (xmax - xmin).max(ymax - ymin).max(1e-9);
-    let px = extent / size.max(1) as f64; // metres per pixel
-    let mw = (((xmax - xmin) / px).ceil() as usize).max(1);
-    let mh = (((ymax - ymin) / px).ceil() as usize).max(1);
+    let RasterFrame { px, west: xmin, north: ymax, width: mw, height: mh } =
+        RasterFrame::around([xmin, ymin, xmax, ymax], size);
     // Per pixel: its elevation, its slope for the shading, its colour, the PNG's bytes.
     let request = format!("a top view of {mw} x {mh} px");
     budget.admit(&request, mw as f64 * mh as f64, "pixels", PIXEL_BYTES).map_err(|e| e.to_string())?;
@@ -106,6 +104,36 @@ pub fn top_view(
         }
     }
     height_picture(&Raster { z: &z, width: mw, height: mh, px, west: xmin, north: ymax }, &format!("{name}: elevation"))
+}
+
+/// Pixels left free round the data inside a picture's frame, so that nothing drawn
+/// touches it.
+const MARGIN_PX: usize = 4;
+
+/// Where a raster lies and how fine it is: the extent of what it shows, with a margin
+/// of [`MARGIN_PX`] on every side inside a longer side of `size` pixels.
+pub(crate) struct RasterFrame {
+    /// Metres a pixel.
+    pub px: f64,
+    /// x of the raster's western edge, m.
+    pub west: f64,
+    /// y of the raster's northern edge, m.
+    pub north: f64,
+    /// Columns.
+    pub width: usize,
+    /// Rows.
+    pub height: usize,
+}
+
+impl RasterFrame {
+    /// The frame of a raster showing `[x0, y0, x1, y1]` with its longer side `size` pixels.
+    pub(crate) fn around([x0, y0, x1, y1]: [f64; 4], size: usize) -> RasterFrame {
+        let inner = size.saturating_sub(2 * MARGIN_PX).max(1);
+        let px = (x1 - x0).max(y1 - y0).max(1e-9) / inner as f64;
+        let pixels = |extent: f64| ((extent / px).ceil() as usize).max(1) + 2 * MARGIN_PX;
+        let margin = MARGIN_PX as f64 * px;
+        RasterFrame { px, west: x0 - margin, north: y1 + margin, width: pixels(x1 - x0), height: pixels(y1 - y0) }
+    }
 }
 
 /// Heights on a raster: row by row from the north, `None` off the surface, NaN where it

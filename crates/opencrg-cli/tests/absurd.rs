@@ -29,7 +29,9 @@ fn inputs(d: &Path) {
             format!("{x} {y} {}\n", 0.01 * x.sin())
         })
         .collect();
-    std::fs::write(d.join("cloud.xyz"), cloud).unwrap();
+    std::fs::write(d.join("cloud.xyz"), &cloud).unwrap();
+    // The same cloud with two stray points 6,000 km away.
+    std::fs::write(d.join("stray.xyz"), format!("{cloud}6000000 0 0\n20 -6000000 0\n")).unwrap();
     let ply = "ply\nformat binary_little_endian 1.0\nelement vertex 99999999999999999\n\
                property double x\nproperty double y\nproperty double z\nend_header\n";
     std::fs::write(d.join("claims.ply"), ply).unwrap();
@@ -83,6 +85,9 @@ fn absurd_requests_are_refused_in_one_line() {
         vec!["import", "cloud.xyz", "out.crg", "--u-inc", "1e-9", "--v-inc", "0.1"],
         vec!["import", "cloud.xyz", "out.crg", "--u-inc", "0.1", "--v-inc", "0.1", "--width", "1e12"],
         vec!["import", "claims.ply", "out.crg", "--u-inc", "0.1", "--v-inc", "0.1"],
+        vec!["import", "stray.xyz", "out.crg", "--u-inc", "1", "--v-inc", "1"],
+        vec!["import", "cloud.xyz", "out.crg", "--u-inc", "1", "--v-inc", "1", "--crop", "0:1,5:6"],
+        vec!["import", "cloud.xyz", "out.crg", "--u-inc", "1", "--v-inc", "1", "--crop", "0:100"],
         vec!["filter", "road.crg", "out.crg", "--median", "1000001"],
         vec!["filter", "road.crg", "out.crg", "--median", "-3"],
         vec!["filter", "road.crg", "out.crg", "--gauss", "1e9"],

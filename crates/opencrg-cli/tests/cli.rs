@@ -440,14 +440,20 @@ fn road_tools_keep_the_surface_where_it_was() {
     ok(&["resample", &s(&road), &s(&p("fine.crg")), "--u-inc", "0.05"]);
     ok(&["slope", &s(&road), &s(&p("applied.crg")), "--apply"]);
     ok(&["banking", &s(&p("applied.crg")), &s(&p("banked.crg")), "--extract"]);
-    for (made, reverse) in [
-        ("cut.crg", false),
-        ("flip.crg", true),
-        ("ab.crg", true),
-        ("fine.crg", false),
-        ("applied.crg", true),
-        ("banked.crg", true),
-    ] {
+    // The two cuts appended: the road with its turn at the joint taken out, the same surface
+    // in u and v.
+    let (whole, joined) =
+        (opencrg::ContactPoint::new(std::sync::Arc::new(r.clone())), Road::load(p("ab.crg")).unwrap());
+    let joined = opencrg::ContactPoint::new(std::sync::Arc::new(joined));
+    for u in [1.0, 30.0, 45.5, 60.0, 90.0] {
+        for v in [-1.9, 0.0, 1.9] {
+            let (a, b) = (whole.uv_to_z(u, v).unwrap(), joined.uv_to_z(u, v).unwrap());
+            assert!((a - b).abs() < 1e-4, "ab.crg at u {u} v {v}: {a} {b}");
+        }
+    }
+    for (made, reverse) in
+        [("cut.crg", false), ("flip.crg", true), ("fine.crg", false), ("applied.crg", true), ("banked.crg", true)]
+    {
         let (worst, n) = difference(&road, &p(made));
         assert!(n > 1000 && worst < 1e-4, "{made}: {worst} over {n}");
         if reverse {
@@ -551,5 +557,30 @@ fn road_tools_refuse_bad_input_in_one_line() {
         let e = text(&out.stderr);
         assert_eq!(e.lines().count(), 1, "{args:?}: {e}");
         assert!(!out_path.exists(), "{args:?}");
+    }
+}
+
+#[test]
+fn a_group_of_commands_names_every_one_of_them() {
+    let help = ok(&["odr", "--help"]);
+    let summary = help.lines().next().unwrap();
+    let commands: Vec<&str> = help
+        .split("Commands:")
+        .nth(1)
+        .unwrap()
+        .lines()
+        .skip(1)
+        .take_while(|l| !l.trim().is_empty())
+        // Command lines are indented by two spaces, their wrapped text by more.
+        .filter(|l| l.starts_with("  ") && !l.starts_with("   "))
+        .filter_map(|l| l.split_whitespace().next())
+        .filter(|&c| c != "help")
+        .collect();
+    assert!(commands.len() >= 6, "{help}");
+    for c in commands {
+        assert!(
+            summary.contains(c),
+            "`opencrg odr --help` names {c} among its commands but not in its first line: {summary}"
+        );
     }
 }

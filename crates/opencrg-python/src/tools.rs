@@ -181,9 +181,10 @@ pub(crate) fn generate(
 
 /// A road from a point cloud (an array (n, 3) or a point file): gridded along `refline`
 /// (points or a file; without, a line fitted through the cloud), `width` wide (without,
-/// as far as the cloud reaches), each node linear in the Delaunay triangle around it.
+/// as far as the cloud reaches), each node linear in the Delaunay triangle around it;
+/// `crop` ((x0, x1), (y0, y1)) keeps only the points within it.
 #[pyfunction]
-#[pyo3(signature = (cloud, u_inc, v_inc, *, refline = None, width = None, max_edge = None, fill_nan = false, max_memory = None))]
+#[pyo3(signature = (cloud, u_inc, v_inc, *, refline = None, width = None, max_edge = None, fill_nan = false, crop = None, max_memory = None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn import_points(
     py: Python<'_>,
@@ -194,11 +195,13 @@ pub(crate) fn import_points(
     width: Option<f64>,
     max_edge: Option<f64>,
     fill_nan: bool,
+    crop: Option<((f64, f64), (f64, f64))>,
     max_memory: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Road> {
     let cloud = points(cloud)?;
     let refline = refline.map(points).transpose()?;
-    let how = Import { refline, width, u_inc, v_inc, max_edge, fill: fill_nan };
+    let crop = crop.map(|(x, y)| [x, y]);
+    let how = Import { refline, width, u_inc, v_inc, max_edge, fill: fill_nan, crop };
     let budget = budget(max_memory)?;
     py.detach(|| tools::import(&cloud, &how, &|_, _, _| {}, &budget)).map(made).map_err(to_py)
 }

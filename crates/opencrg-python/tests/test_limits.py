@@ -23,6 +23,11 @@ def cloud():
     return np.column_stack([x.ravel(), y.ravel(), 0.01 * np.sin(x.ravel())])
 
 
+def stray_cloud():
+    """The cloud with two stray points 6,000 km away."""
+    return np.vstack([cloud(), [[6.0e6, 0.0, 0.0], [20.0, -6.0e6, 0.0]]])
+
+
 # (what, call, words the message holds)
 ABSURD = [
     ("resample u_inc=1e-9", lambda r: r.resample(u_inc=1e-9), ["1e-9 m", "the limit is", "max_memory="]),
@@ -38,6 +43,8 @@ ABSURD = [
     ("generate width=3e9", lambda r: opencrg.generate(line(), 3e9, 0.1, 0.1), ["3e9 m wide"]),
     ("import u_inc=1e-9", lambda r: opencrg.import_points(cloud(), 1e-9, 0.1), ["1e-9 m"]),
     ("import width=1e12", lambda r: opencrg.import_points(cloud(), 0.1, 0.1, width=1e12), ["1e12 m wide"]),
+    ("import stray points", lambda r: opencrg.import_points(stray_cloud(), 1.0, 1.0), ["stray points?", "crop to x"]),
+    ("import crop=empty", lambda r: opencrg.import_points(cloud(), 1.0, 1.0, crop=((0, 1), (5, 6))), ["at least three"]),
     ("filter median=1000001", lambda r: r.filter(median=1000001), ["wider than the road"]),
     ("filter median=-3", lambda r: r.filter(median=-3), ["median window -3"]),
     ("filter gauss=1e9", lambda r: r.filter(gauss=1e9), ["beyond the road"]),

@@ -105,3 +105,17 @@ def test_a_cloud_sampled_from_a_surface_comes_back():
     want = 3.0 + 0.05 * np.sin(xs / 3.0) + 0.02 * np.cos(ys)
     ok = ~np.isnan(zs)
     assert np.max(np.abs(zs[ok] - want[ok])) < 0.002
+
+
+def test_a_cloud_with_stray_points_is_imported_cropped():
+    rng = np.random.default_rng(6)
+    n = 20_000
+    x, y = rng.uniform(0.0, 60.0, n), rng.uniform(-4.0, 4.0, n)
+    points = np.column_stack([x, y, 0.01 * np.sin(x)])
+    stray = np.vstack([points, [[6.0e6, 0.0, 0.0], [30.0, -6.0e6, 0.0]]])
+    with pytest.raises(opencrg.RequestError) as e:
+        opencrg.import_points(stray, 1.0, 1.0)
+    assert "stray points?" in str(e.value)
+    road = opencrg.import_points(stray, 1.0, 1.0, crop=((-10.0, 70.0), (-10.0, 10.0)))
+    plain = opencrg.import_points(points, 1.0, 1.0)
+    assert np.asarray(road.grid).shape == np.asarray(plain.grid).shape

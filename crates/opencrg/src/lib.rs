@@ -28,6 +28,7 @@ mod base {
     pub(crate) mod memory;
     pub(crate) mod setting_values;
     pub mod settings;
+    pub mod units;
 }
 mod model {
     pub mod georef;
@@ -113,6 +114,7 @@ pub mod tools {
 pub use analysis::{iri, psd, roughness};
 pub use base::budget::{parse_bytes, Budget};
 pub use base::settings;
+pub use base::units;
 use base::{budget, compat, error, memory};
 use export::gltf;
 pub use export::{mesh, mesh_files, simplify};

@@ -78,16 +78,34 @@ fn a_flipped_road_is_the_same_surface_driven_the_other_way() {
 }
 
 #[test]
-fn two_cuts_appended_are_the_uncut_road() {
+fn two_cuts_appended_are_the_uncut_road_with_a_straight_joint() {
     let road = winding_road();
     let first = tools::cut(&road, (0.0, 93.0), None).unwrap();
     let second = Arc::new(tools::cut(&road, (93.0, 200.0), None).unwrap());
+    // The second part starts with the heading of its first step, as the file format says
+    // (the turn at u = 93 belongs to no part).
+    let r = road.reference_line();
+    let at_93 = 930;
+    assert!((second.reference_line().heading_at(0) - r.heading_at(at_93 + 1)).abs() < 1e-12);
     let joined = tools::append(&first, &second, &machine()).unwrap();
-    assert_eq!(joined.reference_line().n, road.reference_line().n);
-    let (worst, _) = worst_at_nodes(&road, &joined);
-    assert!(worst < 1e-4, "{worst}");
-    let (worst, _) = worst_at_nodes(&Arc::new(joined), &road);
-    assert!(worst < 1e-4, "{worst}");
+    let j = joined.reference_line();
+    assert_eq!(j.n, r.n);
+    // The second part continues from the first's end without a turn.
+    assert!((j.x[at_93] - r.x[at_93]).abs() < 1e-9 && (j.y[at_93] - r.y[at_93]).abs() < 1e-9);
+    assert!((j.heading_at(at_93 + 1) - j.heading_at(at_93)).abs() < 1e-12);
+    // The first part is the road as it was (but in its last cell, whose cross sections
+    // turn towards the next step), the second the same surface in u/v.
+    let (a, b) = (ContactPoint::new(road.clone()), ContactPoint::new(Arc::new(joined)));
+    for u in [0.0, 30.05, 92.9, 93.0, 120.5, 170.25, 199.9] {
+        for v in [-2.9, 0.0, 1.3, 2.9] {
+            let (za, zb) = (a.uv_to_z(u, v).unwrap(), b.uv_to_z(u, v).unwrap());
+            assert!((za - zb).abs() < 1e-4, "u {u} v {v}: {za} {zb}");
+            if u < 93.0 {
+                let ((xa, ya), (xb, yb)) = (a.uv_to_xy(u, v).unwrap(), b.uv_to_xy(u, v).unwrap());
+                assert!((xa - xb).abs() < 1e-9 && (ya - yb).abs() < 1e-9, "u {u} v {v}");
+            }
+        }
+    }
 }
 
 #[test]
@@ -116,8 +134,14 @@ fn resampling_keeps_the_surface_at_the_original_nodes_and_everywhere_at_its_own(
     let road = winding_road();
     let finer = tools::resample(&road, Some(0.05), None, &machine()).unwrap();
     assert_eq!(finer.reference_line().n, 2 * road.reference_line().n - 1);
+    assert_eq!(finer.u_range(), road.u_range(), "the same u range");
+    let (worst, _) = worst_at_nodes(&road, &finer);
+    assert!(worst < 1e-4, "at its own nodes: {worst}");
+    // The new line bends smoothly through the old line's points, so its cross sections
+    // there are turned by half an old corner: the old nodes 3 m aside lie between new
+    // ones, on a surface interpolated from them.
     let (worst, _) = worst_at_nodes(&Arc::new(finer.clone()), &road);
-    assert!(worst < 1e-4, "at the original nodes: {worst}");
+    assert!(worst < 5e-4, "at the original nodes: {worst}");
     let coarser = tools::resample(&road, Some(0.37), Some(0.2), &machine()).unwrap();
     assert_eq!(coarser.increments(), (0.37, 0.2));
     let (worst, n) = worst_at_nodes(&road, &coarser);
@@ -299,6 +323,48 @@ fn an_imported_cloud_gives_the_surface_it_was_sampled_from() {
     let how = Import { refline: Some(beyond), width: Some(4.0), u_inc: 0.5, v_inc: 0.5, ..Import::default() };
     let e = tools::import(&cloud, &how, &|_, _, _| {}, &machine()).unwrap_err().to_string();
     assert!(e.contains("beyond the cloud"), "{e}");
+}
+
+#[test]
+fn a_cloud_with_stray_points_is_refused_at_once_and_imported_cropped() {
+    // The cloud of the test above with two stray points 6,000 km away, as a scanner's
+    // glitch leaves them.
+    let mut cloud = cloud();
+    cloud.x.extend([6.0e6, 20.0]);
+    cloud.y.extend([0.0, -6.0e6]);
+    cloud.z.as_mut().unwrap().extend([0.0, 0.0]);
+    let how = Import { u_inc: 0.5, v_inc: 0.5, ..Import::default() };
+    let started = std::time::Instant::now();
+    let e = tools::import(&cloud, &how, &|_, _, _| {}, &Budget::with_bytes(200_000_000)).unwrap_err().to_string();
+    assert!(started.elapsed().as_secs_f64() < 5.0, "refused after {:?}", started.elapsed());
+    for words in ["the limit is", "all but 2 of the", "stray points?", "--crop "] {
+        assert!(e.contains(words), "{words}: {e}");
+    }
+    // The crop the message proposes makes the road the cloud without them would make.
+    let crop = e.rsplit("--crop ").next().unwrap().trim_end_matches(')');
+    let (x, y) = crop.split_once(',').unwrap();
+    let range = |r: &str| {
+        let (a, b) = r.split_once(':').unwrap();
+        (a.parse::<f64>().unwrap(), b.parse::<f64>().unwrap())
+    };
+    let cropped = Import { crop: Some([range(x), range(y)]), ..how.clone() };
+    let road = tools::import(&cloud, &cropped, &|_, _, _| {}, &machine()).unwrap();
+    let plain = tools::import(&self::cloud(), &how, &|_, _, _| {}, &machine()).unwrap();
+    assert_eq!((road.grid().nu, road.grid().nv), (plain.grid().nu, plain.grid().nv));
+    // A crop that leaves fewer than three points, or is no area, is refused.
+    let e = tools::import(
+        &cloud,
+        &Import { crop: Some([(1e7, 2e7), (0.0, 1.0)]), ..how.clone() },
+        &|_, _, _| {},
+        &machine(),
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("0 of the") && e.contains("at least three"), "{e}");
+    let e = tools::import(&cloud, &Import { crop: Some([(5.0, 1.0), (0.0, 1.0)]), ..how }, &|_, _, _| {}, &machine())
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("from the smaller to the larger"), "{e}");
 }
 
 #[test]

@@ -239,9 +239,10 @@ def import_points(
     width: float | None = None,
     max_edge: float | None = None,
     fill_nan: bool = False,
+    crop: tuple[tuple[float, float], tuple[float, float]] | None = None,
     max_memory: _Memory | None = None,
 ) -> Road:
-    """A road from a point cloud (n, 3), gridded along refline (or a line fitted through the cloud)."""
+    """A road from a point cloud (n, 3), gridded along refline (or a line fitted through the cloud); crop ((x0, x1), (y0, y1)) keeps the points within it."""
 
 def read_points(path: _Path) -> _Floats:
     """The points of a CSV/XYZ, PLY or LAS/LAZ file, shape (n, 2) or (n, 3)."""

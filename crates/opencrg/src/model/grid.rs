@@ -47,6 +47,27 @@ pub struct Grid {
     pub(crate) last_frac: f64,
 }
 
+/// The banking's v at `v` where banking acts within `range` (right, left): beyond it, v
+/// counts as its border.
+pub(crate) fn bank_v(v: f64, range: (f64, f64)) -> f64 {
+    if v < range.0 {
+        range.0
+    } else if v > range.1 {
+        range.1
+    } else {
+        v
+    }
+}
+
+impl Grid {
+    /// The v range of the long sections themselves: what `LONG_SECTION_V_RIGHT` and
+    /// `_LEFT` must say of this grid (the range the road was read with may differ: a
+    /// file without them is read with both 0, and the reference acts on that).
+    pub fn sections_range(&self) -> (f64, f64) {
+        (self.v[0], self.v[self.nv - 1])
+    }
+}
+
 /// How far ahead along u (in values) a lookup also asks for the grid: the next cache line.
 const AHEAD: usize = 16;
 

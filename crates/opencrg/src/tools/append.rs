@@ -44,10 +44,11 @@ pub fn append(first: &Road, second: &Arc<Road>, budget: &Budget) -> Result<Road>
     joined(a, b).into_road(&what)
 }
 
-/// `b` continuing `a` (both with the same u increment and long sections).
+/// `b` continuing `a` (both with the same u increment and long sections): `b`'s first step
+/// in the direction of `a`'s last.
 fn joined(a: Draft, b: Draft) -> Draft {
     let (na, nb) = (a.nu(), b.nu());
-    let turn = a.phi[na - 1] - b.phi[0];
+    let turn = a.phi[na - 1] - b.phi[1];
     let mut phi = a.phi.clone();
     phi.extend(b.phi[1..].iter().map(|p| p + turn));
     let both = |x: &Option<Vec<f64>>, y: &Option<Vec<f64>>| -> Option<Vec<f64>> {

@@ -4,6 +4,7 @@
 use super::draft::Draft;
 use crate::error::{Error, Num, Result};
 use crate::road::Road;
+use crate::units::Metres;
 
 /// The part of `road` between `u.0` and `u.1` (and between `v.0` and `v.1`, when
 /// given): the grid nodes inside those ranges, with the same surface at the same x/y/z.
@@ -21,10 +22,10 @@ pub fn cut(road: &Road, u: (f64, f64), v: Option<(f64, f64)>) -> Result<Road> {
     let what = format!(
         "cut by opencrg {}: u {} to {} m, v {} to {} m",
         env!("CARGO_PKG_VERSION"),
-        d.u_first + a as f64 * d.u_inc,
-        d.u_first + b as f64 * d.u_inc,
-        d.v[c],
-        d.v[e]
+        Metres(d.u_first + a as f64 * d.u_inc),
+        Metres(d.u_first + b as f64 * d.u_inc),
+        Metres(d.v[c]),
+        Metres(d.v[e])
     );
     slice(d, road.grid().values(), a..=b, c..=e).into_road(&what)
 }

@@ -5,9 +5,10 @@
 use crate::build::LineValues;
 use crate::error::Result;
 use crate::georef::GlobalOrigin;
-use crate::grid::VLayout;
+use crate::grid::{bank_v, VLayout};
 use crate::header::{Channel, EndsGiven, Header, RoadParams};
 use crate::road::{LoadOptions, Road};
+use std::f64::consts::TAU;
 
 /// A road as arrays: one heading (and slope and banking, when it has them) per cross
 /// section, the long sections' v, the elevations long section by long section
@@ -56,8 +57,7 @@ pub(crate) fn headings_through(points: &[(f64, f64)]) -> Vec<f64> {
     let mut phi = vec![0.0; points.len()];
     for j in 1..points.len() {
         let p = (points[j].1 - points[j - 1].1).atan2(points[j].0 - points[j - 1].0);
-        phi[j] =
-            if j == 1 { p } else { p - ((p - phi[j - 1]) / std::f64::consts::TAU).round() * std::f64::consts::TAU };
+        phi[j] = if j == 1 { p } else { p - ((p - phi[j - 1]) / TAU).round() * TAU };
     }
     phi[0] = phi.get(1).copied().unwrap_or(0.0);
     phi
@@ -167,15 +167,23 @@ impl Draft {
 
     /// The banking's share of the surface at cross section `i` and `v`.
     pub fn bank_term(&self, i: usize, v: f64) -> f64 {
-        let (right, left) = self.bank_v;
-        let v = if v < right {
-            right
-        } else if v > left {
-            left
-        } else {
-            v
-        };
-        self.bank.as_ref().map_or(0.0, |b| b[i] * v)
+        self.bank.as_ref().map_or(0.0, |b| b[i] * bank_v(v, self.bank_v))
+    }
+
+    /// Makes banking act over the long sections' own range (what the file written says),
+    /// each node keeping its surface.
+    fn bank_over_sections(&mut self) {
+        let sections = (self.v[0], self.v[self.nv() - 1]);
+        if let Some(bank) = self.bank.as_ref().filter(|_| self.bank_v != sections) {
+            let nu = self.nu();
+            for (iv, &v) in self.v.iter().enumerate() {
+                let shift = bank_v(v, self.bank_v) - bank_v(v, sections);
+                for (z, b) in self.z[iv * nu..(iv + 1) * nu].iter_mut().zip(bank) {
+                    *z = (f64::from(*z) + b * shift) as f32;
+                }
+            }
+        }
+        self.bank_v = sections;
     }
 
     /// The banking at every cross section (0 without banking).
@@ -200,8 +208,21 @@ impl Draft {
         frame.into_road("")
     }
 
-    /// The new road, with `what` added to its comments.
-    pub fn into_road(self, what: &str) -> Result<Road> {
+    /// The new road, with `what` added to its comments. Its start heading is that of its
+    /// first step (each heading turns the step that ends at its cross section, so a cut's
+    /// first one would be that of the step before the part); its headings lie within
+    /// [-pi, pi] (a full turn less or more changes nothing but the number); its banking
+    /// acts over the long sections' range.
+    pub fn into_road(mut self, what: &str) -> Result<Road> {
+        if self.phi.len() > 1 {
+            self.phi[0] = self.phi[1];
+        }
+        for p in &mut self.phi {
+            *p -= (*p / TAU).round() * TAU;
+        }
+        if !self.z.is_empty() {
+            self.bank_over_sections();
+        }
         let nu = self.nu();
         let nv = self.nv();
         let u_last = self.u_last();
@@ -225,8 +246,8 @@ impl Draft {
             start_z: Some(self.z_start),
             start_phi: Some(self.phi[0]),
             end_phi: Some(self.phi[nu - 1]),
-            v_right: Some(if self.regular { self.v[0] } else { self.bank_v.0 }),
-            v_left: Some(self.bank_v.1),
+            v_right: Some(self.v[0]),
+            v_left: Some(self.v[nv - 1]),
             v_increment: self.regular.then_some(v_inc),
             offset: if had_origin { [origin.x, origin.y, origin.z, origin.phi].map(Some) } else { [None; 4] },
             extra,

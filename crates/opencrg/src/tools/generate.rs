@@ -83,6 +83,13 @@ const MAX_COORDINATE: f64 = 1e9;
 /// A draft along the curve through `line` with the layout's long sections and no grid
 /// values yet, sized against `budget` before anything is made.
 pub(crate) fn along(line: &Points, layout: Layout, budget: &Budget) -> Result<Draft> {
+    // The polyline the cross sections are walked along: points this far apart.
+    along_with(line, layout, (layout.u_inc / 8.0).min(0.05), budget)
+}
+
+/// [`along`] walking a polyline of the curve with points `spacing` apart (a coarser one
+/// where the line is only a guide).
+pub(crate) fn along_with(line: &Points, layout: Layout, spacing: f64, budget: &Budget) -> Result<Draft> {
     let Layout { width, u_inc, v_inc } = layout;
     if line.len() < 2 || line.y.len() != line.len() || line.z.as_ref().is_some_and(|z| z.len() != line.len()) {
         return Err(Error::Request(format!(
@@ -108,9 +115,6 @@ pub(crate) fn along(line: &Points, layout: Layout, budget: &Budget) -> Result<Dr
     let curve = Curve::through(&line.x, &line.y, line.z.as_deref())
         .map_err(|i| Error::Request(format!("reference line points {i} and {} coincide", i + 1)))?;
     let nu = cross_sections(curve.length, u_inc)?;
-    // The polyline the cross sections are walked along: points `spacing` apart, x, y and
-    // the curve's parameter each.
-    let spacing = (u_inc / 8.0).min(0.05);
     let request = format!(
         "a road {} m wide with a u increment of {} m and a v increment of {} m",
         Num(width),

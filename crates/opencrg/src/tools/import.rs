@@ -2,11 +2,13 @@
 //! node interpolated linearly in the triangle around it.
 
 use super::filter::fill_nan;
-use super::generate::{along, Layout, Points};
+use super::generate::{along, along_with, Layout, Points};
 use super::nodes::{at_nodes, Progress};
+use super::path::Curve;
+use super::resample::{cross_sections, position_count};
 use crate::budget::{filled, Budget};
 use crate::contact::ContactPoint;
-use crate::error::{Error, Result};
+use crate::error::{Error, Num, Result};
 use crate::road::Road;
 use spade::handles::FixedVertexHandle;
 use spade::{DelaunayTriangulation, HasPosition, Point2, PositionInTriangulation, Triangulation};
@@ -29,6 +31,9 @@ pub struct Import {
     pub max_edge: Option<f64>,
     /// Whether NaN nodes are filled (as [`Filter::FillNan`](super::filter::Filter)).
     pub fill: bool,
+    /// Only the points within these x and y ranges (`[(x_min, x_max), (y_min, y_max)]`)
+    /// are used: a way to leave out stray points far from the rest.
+    pub crop: Option<[(f64, f64); 2]>,
 }
 
 #[derive(Clone, Copy)]
@@ -62,20 +67,39 @@ pub fn import(cloud: &Points, how: &Import, progress: Progress, budget: &Budget)
             z.len()
         )));
     }
+    let cropped;
+    let cloud = match how.crop {
+        Some(area) => {
+            cropped = crop(cloud, z, area)?;
+            &cropped
+        }
+        None => cloud,
+    };
+    let z = cloud.z.as_ref().ok_or_else(|| Error::Request("the points have no z".into()))?;
     if cloud.len() < 3 {
         return Err(Error::Request(format!("{} point(s): a surface needs at least three", cloud.len())));
     }
+    // What the points' spread says, for a refusal: stray points far from the rest make a
+    // road the size of the distance between them.
+    let hint = |e: Error| match (e, stray_points(cloud)) {
+        (Error::Request(m), Some(stray)) => Error::Request(format!("{m}; {stray}")),
+        (e, _) => e,
+    };
     let request = format!("triangulating {} points", cloud.len());
     budget.admit(&request, cloud.len() as f64, "triangulated points", TRIANGULATED_POINT_BYTES)?;
     let line = match &how.refline {
         Some(l) => l.clone(),
         None => fitted_line(cloud)?,
     };
+    // The road's cross sections with the narrowest grid, sized before the width is
+    // measured around the line.
+    along_admitted(&line, Layout { width: 2.0 * how.v_inc, u_inc: how.u_inc, v_inc: how.v_inc }, budget)
+        .map_err(hint)?;
     let width = match how.width {
         Some(w) => w,
-        None => reach(cloud, &line, how, budget)?,
+        None => reach(cloud, &line, how.v_inc, budget)?,
     };
-    let mut d = along(&line, Layout { width, u_inc: how.u_inc, v_inc: how.v_inc }, budget)?;
+    let mut d = along(&line, Layout { width, u_inc: how.u_inc, v_inc: how.v_inc }, budget).map_err(hint)?;
     if line.z.is_none() {
         // Heights near the grid's values keep single precision fine.
         d.z_start = z.iter().sum::<f64>() / z.len() as f64;
@@ -215,9 +239,13 @@ fn fitted_line(cloud: &Points) -> Result<Points> {
 
 /// How wide a road the cloud carries around the line: twice the smaller of the reaches
 /// to the right and to the left (each the 99th percentile of the points' |v| on that
-/// side, of at most 200,000 points), down to whole long section increments.
-fn reach(cloud: &Points, line: &Points, how: &Import, budget: &Budget) -> Result<f64> {
-    let probe = along(line, Layout { width: 2.0 * how.v_inc, u_inc: how.u_inc, v_inc: how.v_inc }, budget)?;
+/// side, of at most 200,000 points), down to whole long section increments. The points'
+/// v are measured against the line walked at most 20,000 cross sections along, whatever
+/// the road's own increment.
+fn reach(cloud: &Points, line: &Points, v_inc: f64, budget: &Budget) -> Result<f64> {
+    let length = Curve::through(&line.x, &line.y, None).map_or(0.0, |c| c.length);
+    let probe_inc = (length / 20_000.0).max(v_inc).max(1e-3);
+    let probe = along_with(line, Layout { width: 2.0, u_inc: probe_inc, v_inc: 1.0 }, probe_inc / 8.0, budget)?;
     let frame = Arc::new(probe.frame(-1.0, 1.0)?);
     let mut cp = ContactPoint::new(frame);
     let step = (cloud.len() / 200_000).max(1);
@@ -236,9 +264,91 @@ fn reach(cloud: &Points, line: &Points, how: &Import, budget: &Budget) -> Result
         d.get((d.len() as f64 * 0.99) as usize).or(d.last()).copied().unwrap_or(0.0)
     };
     let half = q(right).min(q(left));
-    let width = 2.0 * (half / how.v_inc).floor() * how.v_inc;
-    if !(width >= 2.0 * how.v_inc) {
+    let width = 2.0 * (half / v_inc).floor() * v_inc;
+    if !(width >= 2.0 * v_inc) {
         return Err(Error::Request("the points lie on one side of the line: give the width".into()));
     }
     Ok(width)
+}
+
+/// Sizes the road `along` would make against `budget`, without making it.
+fn along_admitted(line: &Points, layout: Layout, budget: &Budget) -> Result<()> {
+    let curve = Curve::through(&line.x, &line.y, None)
+        .map_err(|i| Error::Request(format!("reference line points {i} and {} coincide", i + 1)))?;
+    let nu = cross_sections(curve.length, layout.u_inc)?;
+    let nv = position_count(-layout.width / 2.0, layout.width / 2.0, layout.v_inc, "v increment")?;
+    let request = format!("a road {} m long with a u increment of {} m", Num(curve.length), Num(layout.u_inc));
+    budget.admit_road(&request, nu, nv, 0.0).map(|_| ())
+}
+
+/// The points within `area` (x range, y range). Refused: an area that is not two ranges
+/// of finite numbers, or holds fewer than three points.
+fn crop(cloud: &Points, z: &[f64], [(x0, x1), (y0, y1)]: [(f64, f64); 2]) -> Result<Points> {
+    if ![x0, x1, y0, y1].iter().all(|c| c.is_finite()) || x0 >= x1 || y0 >= y1 {
+        return Err(Error::Request(format!(
+            "crop x {}:{}, y {}:{}: two ranges of finite numbers, each from the smaller to the larger",
+            Num(x0),
+            Num(x1),
+            Num(y0),
+            Num(y1)
+        )));
+    }
+    let (mut xs, mut ys, mut zs) = (Vec::new(), Vec::new(), Vec::new());
+    for ((&x, &y), &z) in cloud.x.iter().zip(&cloud.y).zip(z) {
+        if (x0..=x1).contains(&x) && (y0..=y1).contains(&y) {
+            xs.push(x);
+            ys.push(y);
+            zs.push(z);
+        }
+    }
+    let kept = Points { x: xs, y: ys, z: Some(zs) };
+    if kept.len() < 3 {
+        return Err(Error::Request(format!(
+            "{} of the {} points lie within x {}:{}, y {}:{}: a surface needs at least three",
+            kept.len(),
+            cloud.len(),
+            Num(x0),
+            Num(x1),
+            Num(y0),
+            Num(y1)
+        )));
+    }
+    Ok(kept)
+}
+
+/// A sentence on stray points, when a few lie far from the rest: the share of points in
+/// the central box and its size against the full extent, and the crop that leaves the
+/// others out; `None` when the points spread evenly.
+fn stray_points(cloud: &Points) -> Option<String> {
+    let quantiles = |values: &[f64]| {
+        let mut v: Vec<f64> = values.iter().copied().filter(|x| x.is_finite()).collect();
+        let n = v.len();
+        if n < 3 {
+            return None;
+        }
+        let k = |q: f64| ((n - 1) as f64 * q).round() as usize;
+        let lo = *v.select_nth_unstable_by(k(0.01), f64::total_cmp).1;
+        let hi = *v.select_nth_unstable_by(k(0.99), f64::total_cmp).1;
+        let min = v.iter().copied().fold(f64::INFINITY, f64::min);
+        let max = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        Some((min, lo, hi, max))
+    };
+    let (xmin, x0, x1, xmax) = quantiles(&cloud.x)?;
+    let (ymin, y0, y1, ymax) = quantiles(&cloud.y)?;
+    let central = (x1 - x0).hypot(y1 - y0);
+    let full = (xmax - xmin).hypot(ymax - ymin);
+    if !(full > 3.0 * central + 100.0) {
+        return None;
+    }
+    // The box around the central points, a tenth of its size (at least 10 m) added round.
+    let margin = (0.1 * central).max(10.0);
+    let (cx0, cx1, cy0, cy1) =
+        ((x0 - margin).floor(), (x1 + margin).ceil(), (y0 - margin).floor(), (y1 + margin).ceil());
+    let outside =
+        (0..cloud.len()).filter(|&i| !((cx0..=cx1).contains(&cloud.x[i]) && (cy0..=cy1).contains(&cloud.y[i]))).count();
+    Some(format!(
+        "all but {outside} of the {} points lie within {central:.0} m of each other, all of them within {full:.0} m: \
+         stray points? Leave them out with a crop to x {cx0}:{cx1}, y {cy0}:{cy1} (--crop {cx0}:{cx1},{cy0}:{cy1})",
+        cloud.len()
+    ))
 }

@@ -2,15 +2,18 @@
 
 use super::draft::{headings_through, slopes_for, Draft};
 use super::nodes::{at_nodes, Progress, SurfaceProbe};
-use super::path::chord_walk;
+use super::path::{arc_walk, Curve};
 use crate::budget::{filled, Budget};
 use crate::error::{Error, Num, Result};
 use crate::road::Road;
 use std::sync::Arc;
 
 /// `road`'s surface on a grid of cross sections `u_inc` apart and long sections `v_inc`
-/// apart (each the road's own when `None`). The new reference line's points lie on the
-/// old one, exactly `u_inc` apart; each node's z is the old surface at the node's x/y.
+/// apart (each the road's own when `None`). The new cross sections keep the old u range:
+/// they start at the road's start, and the last lies at its end where `u_inc` divides the
+/// length, within one increment of it otherwise; each lies on a smooth curve through the
+/// old reference line's points (within its chord's shortfall where the curve bends between
+/// two of them, see `arc_walk`); each node's z is the old surface at the node's x/y.
 /// Refused: an increment that is not a positive number, a grid beyond `budget`.
 pub fn resample(road: &Arc<Road>, u_inc: Option<f64>, v_inc: Option<f64>, budget: &Budget) -> Result<Road> {
     let du = u_inc.unwrap_or(road.increments().0);
@@ -83,8 +86,13 @@ pub(crate) fn onto(
     let line = road.reference_line();
     budget.admit_road(&request, cross_sections(line.u_last - line.u_first, du)?, v.len() as f64, 0.0)?;
     let old = Draft::line_of(road);
-    let u_old: Vec<f64> = (0..line.n).map(|i| line.u_at(i)).collect();
-    let stops = chord_walk(&line.x, &line.y, &u_old, du)?;
+    let count = cross_sections(line.u_last - line.u_first, du)? as usize;
+    // The new line follows a smooth curve through the old line's points (its parameter,
+    // the length along the old line, is u): finer cross sections bend gently between
+    // the old ones instead of turning each old corner in one step.
+    let curve = Curve::through(&line.x, &line.y, None)
+        .map_err(|i| Error::Request(format!("the reference line's points {} and {i} coincide", i - 1)))?;
+    let stops = arc_walk(line.u_first, du, count, |u| curve.at(u - line.u_first))?;
     if stops.len() < 2 {
         return Err(Error::Request(format!(
             "a u increment of {du} m leaves fewer than two cross sections on a road {} m long",

@@ -8,7 +8,7 @@
 //! precision for LRFI and LDFI.
 
 use crate::error::{Error, Result};
-use crate::grid::VLayout;
+use crate::grid::{bank_v, VLayout};
 use crate::header::DataFormat;
 use crate::road::Road;
 use crate::settings::{Accepts, Family, Settings, Value, SETTINGS};
@@ -92,8 +92,11 @@ pub fn write_to(road: &Road, out: &mut impl Write, format: DataFormat) -> io::Re
             kv(k, v)?;
         }
     }
-    kv("LONG_SECTION_V_RIGHT", g.v_first)?;
-    kv("LONG_SECTION_V_LEFT", g.v_last)?;
+    // The long sections' own range (a road read from a file without it holds 0 and 0;
+    // the grid values below then carry the banking's share the change of range moves).
+    let sections = g.sections_range();
+    kv("LONG_SECTION_V_RIGHT", sections.0)?;
+    kv("LONG_SECTION_V_LEFT", sections.1)?;
     if g.layout == VLayout::Indexed {
         kv("LONG_SECTION_V_INCREMENT", g.v_inc)?;
     }
@@ -166,7 +169,19 @@ pub fn write_to(road: &Road, out: &mut impl Write, format: DataFormat) -> io::Re
             row.push(ch[iu]);
         }
         let mean = g.mean;
-        row.extend(g.cross_section(iu).map(|z| if mean == 0.0 { f64::from(z) } else { f64::from(z) + mean }));
+        let read_range = (g.v_first, g.v_last);
+        if l.has_bank && read_range != sections {
+            // Banking acts within the sections' range in the file written: each node keeps
+            // its surface.
+            let bank = l.bank.as_ref().map_or(l.bank_first, |b| b[iu]);
+            row.extend(
+                g.cross_section(iu)
+                    .zip(&g.v)
+                    .map(|(z, &v)| f64::from(z) + mean + bank * (bank_v(v, read_range) - bank_v(v, sections))),
+            );
+        } else {
+            row.extend(g.cross_section(iu).map(|z| if mean == 0.0 { f64::from(z) } else { f64::from(z) + mean }));
+        }
         if format.is_text() {
             text.clear();
             let per_line = 80 / width;
