@@ -40,8 +40,8 @@ cargo "+$msrv" check -q --workspace --all-targets --locked --target-dir target/m
 # packaged crate into CARGO_HOME once per version and reuses what it built from it, so
 # the copies and builds an earlier run of the same version left go first.
 find "${CARGO_HOME:-$HOME/.cargo}/registry/src" -mindepth 2 -maxdepth 2 -path '*/-*/opencrg-*' -exec rm -rf {} +
-cargo clean -q -p opencrg-core -p opencrg-odr -p opencrg-sys -p opencrg-cli
-cargo package -q --locked --allow-dirty -p opencrg-core -p opencrg-odr -p opencrg-sys -p opencrg-cli
+cargo clean -q -p opencrg-core -p opencrg-odr -p opencrg-tools -p opencrg-sys -p opencrg-cli
+cargo package -q --locked --allow-dirty -p opencrg-core -p opencrg-odr -p opencrg-tools -p opencrg-sys -p opencrg-cli
 step "fuzzing"
 # Every fuzz target for 15 s from its seeds (stable toolchain, under 4 GB of address space).
 fuzz/run.sh 15

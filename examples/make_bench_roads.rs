@@ -7,11 +7,11 @@
 //!
 //!     cargo run --release -p opencrg-core --example make_bench_roads -- target/bench-roads [NAME ...]
 
-use opencrg::synth::RoadSpec;
-use opencrg::{DataFormat, Road};
+use opencrg_core::synth::RoadSpec;
+use opencrg_core::{DataFormat, Road};
 
 /// How a benchmark road is made.
-type Make = fn() -> opencrg::Result<Road>;
+type Make = fn() -> opencrg_core::Result<Road>;
 
 /// The benchmark roads: file name (without `.crg`), format, and how to make the road.
 const ROADS: [(&str, DataFormat, Make); 4] = [
@@ -26,18 +26,18 @@ fn surface(u: f64, v: f64) -> f64 {
     0.01 * (u * 7.1).sin() * (v * 3.3).cos() + 0.003 * (u * 41.0 + v * 17.0).sin()
 }
 
-fn track() -> opencrg::Result<Road> {
+fn track() -> opencrg_core::Result<Road> {
     RoadSpec::straight(500.0, 4.0, 0.01, 0.01).with_elevation(surface).build()
 }
 
-fn winding() -> opencrg::Result<Road> {
+fn winding() -> opencrg_core::Result<Road> {
     RoadSpec::straight(10_000.0, 4.0, 0.01, 0.5)
         .with_heading(|u| 3.0 * (u / 400.0).sin() + u / 2000.0)
         .with_elevation(surface)
         .build()
 }
 
-fn hilly() -> opencrg::Result<Road> {
+fn hilly() -> opencrg_core::Result<Road> {
     RoadSpec::straight(2_000.0, 4.0, 0.01, 0.05)
         .with_heading(|u| 3.0 * (u / 400.0).sin() + u / 2000.0)
         .with_slope(|u| 0.04 * (u / 150.0).sin())
@@ -60,7 +60,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
         let path = dir.join(format!("{name}.crg"));
         if !path.exists() {
-            opencrg::write(&make()?, &path, format)?;
+            opencrg_core::write(&make()?, &path, format)?;
         }
         println!("{}", path.display());
     }

@@ -3,7 +3,7 @@
 //!
 //!     cargo run -p opencrg-core --example make_demo_road -- examples/data/demo_road.crg
 
-use opencrg::synth::RoadSpec;
+use opencrg_core::synth::RoadSpec;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let out = std::env::args().nth(1).unwrap_or_else(|| "examples/data/demo_road.crg".into());
@@ -14,7 +14,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .with_bank(|u| 0.01 + 0.01 * (u / 60.0).cos())
         .with_elevation(|u, v| 0.005 * (u * 1.7).sin() * (v * 2.3).cos() + 0.002 * ((u * 0.31 + v).sin()))
         .build()?;
-    opencrg::write(&road, &out, opencrg::DataFormat::Lrfi)?;
+    opencrg_core::write(&road, &out, opencrg_core::DataFormat::Lrfi)?;
     println!("wrote {out}");
     Ok(())
 }

@@ -1,8 +1,8 @@
 //! Writes seed inputs for the fuzz targets (see fuzz/seed.sh) from roads the project
 //! generates: whole files for the header target, data sections for the readers.
 
-use opencrg::synth::RoadSpec;
-use opencrg::DataFormat;
+use opencrg_core::synth::RoadSpec;
+use opencrg_core::DataFormat;
 use std::path::Path;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -31,7 +31,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let road = spec.build()?;
         for format in [DataFormat::Lrfi, DataFormat::Ldfi, DataFormat::Krbi, DataFormat::Kdbi] {
             let mut bytes = Vec::new();
-            opencrg::writer::write_to(&road, &mut bytes, format)?;
+            opencrg_core::writer::write_to(&road, &mut bytes, format)?;
             std::fs::write(dir.join(format!("header/seed{n}")), &bytes)?;
             let marker = [b'$'; 80];
             if let Some(at) = bytes.windows(80).position(|w| w == marker) {

@@ -2,7 +2,7 @@
 //!
 //!     cargo run -p opencrg-core --example rust_evaluate -- examples/data/demo_road.crg
 
-use opencrg::{ContactPoint, Road};
+use opencrg_core::{ContactPoint, Road};
 use std::sync::Arc;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

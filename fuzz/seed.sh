@@ -3,5 +3,5 @@
 # generated roads, whole (header target) and as data sections (reader targets).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cargo run -q --release -p opencrg-core --example make_fuzz_seeds -- fuzz/corpus
+cargo run -q --release -p opencrg-tools --example make_fuzz_seeds -- fuzz/corpus
 ls fuzz/corpus/* | head -50

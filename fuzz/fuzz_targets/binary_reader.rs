@@ -20,7 +20,7 @@ fuzz_target!(|data: &[u8]| {
     h.push_str("$\n$$$$$$$$\n");
     let mut bytes = h.into_bytes();
     bytes.extend_from_slice(body);
-    if let Ok(road) = opencrg::Road::from_bytes(bytes, "fuzz.crg") {
+    if let Ok(road) = opencrg_core::Road::from_bytes(bytes, "fuzz.crg") {
         opencrg_fuzz_common::exercise(road);
     }
 });

@@ -1,6 +1,6 @@
 //! What every reader target does with a road that loaded: check, apply, evaluate
 //! around and beyond it, write it back in every format and read that again.
-use opencrg::{ContactPoint, DataFormat, Road};
+use opencrg_core::{ContactPoint, DataFormat, Road};
 use std::sync::Arc;
 
 pub fn exercise(mut road: Road) {
@@ -23,7 +23,7 @@ pub fn exercise(mut road: Road) {
     }
     for format in [DataFormat::Lrfi, DataFormat::Ldfi, DataFormat::Krbi, DataFormat::Kdbi] {
         let mut out = Vec::new();
-        if opencrg::writer::write_to(&road, &mut out, format).is_ok() {
+        if opencrg_core::writer::write_to(&road, &mut out, format).is_ok() {
             let _ = Road::from_bytes(out, "fuzz-written.crg");
         }
     }

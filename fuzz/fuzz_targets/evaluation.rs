@@ -1,8 +1,8 @@
 //! Small generated roads with random options and modifiers, evaluated at random points.
 #![no_main]
 use libfuzzer_sys::fuzz_target;
-use opencrg::settings::{describe, Family, Kind};
-use opencrg::synth::RoadSpec;
+use opencrg_core::settings::{describe, Family, Kind};
+use opencrg_core::synth::RoadSpec;
 
 fn take_f64(data: &mut &[u8]) -> f64 {
     if data.len() < 8 {
@@ -56,7 +56,7 @@ fuzz_target!(|input: &[u8]| {
     }
     let _ = road.check();
     road.apply_modifiers();
-    let mut cp = opencrg::ContactPoint::new(std::sync::Arc::new(road));
+    let mut cp = opencrg_core::ContactPoint::new(std::sync::Arc::new(road));
     // random options
     for _ in 0..take_u8(&mut d) % 6 {
         let id = 1 + u32::from(take_u8(&mut d) % 19);

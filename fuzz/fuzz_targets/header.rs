@@ -4,7 +4,7 @@
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
-    if let Ok(road) = opencrg::Road::from_bytes(data.to_vec(), "fuzz.crg") {
+    if let Ok(road) = opencrg_core::Road::from_bytes(data.to_vec(), "fuzz.crg") {
         opencrg_fuzz_common::exercise(road);
     }
 });

@@ -3,7 +3,7 @@
 //! checked against its WGS 84 keywords and taken to the earth and back.
 #![no_main]
 use libfuzzer_sys::fuzz_target;
-use opencrg::{Earth, Road};
+use opencrg_core::{Earth, Road};
 
 const HEAD: &str = "$ROAD_CRG\nREFERENCE_LINE_START_U = 0\nREFERENCE_LINE_END_U = 2\n\
 REFERENCE_LINE_INCREMENT = 1\nREFERENCE_LINE_OFFSET_X = 500000\nREFERENCE_LINE_OFFSET_Y = 5300000\n$\n$ROAD_CRG_MPRO\n";
@@ -17,7 +17,7 @@ fuzz_target!(|data: &[u8]| {
     }
     let file = format!("{HEAD}{section}{TAIL}");
     let Ok(road) = Road::from_bytes(file.into_bytes(), "fuzz.crg") else { return };
-    let _ = opencrg::map_disagreements(&road);
+    let _ = opencrg_core::map_disagreements(&road);
     if let Ok(earth) = Earth::of(&road) {
         for xyz in [[0.0, 0.0, 0.0], [2.0, 1.0, 5.0], [-1e7, 3e6, 0.0]] {
             if let Ok(llh) = earth.xyz_to_llh(&road, xyz) {

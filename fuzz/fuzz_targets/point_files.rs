@@ -2,8 +2,8 @@
 //! the rest is the file. Points that read are gridded into a small road.
 #![no_main]
 use libfuzzer_sys::fuzz_target;
-use opencrg::tools::{import, parse_points, Import};
-use opencrg::Budget;
+use opencrg_tools::{import, parse_points, Import};
+use opencrg_core::Budget;
 use std::path::Path;
 
 fuzz_target!(|data: &[u8]| {

@@ -3,11 +3,11 @@
 //! aborts, panics or allocates beyond its budget.
 #![no_main]
 use libfuzzer_sys::fuzz_target;
-use opencrg::mesh::grid_mesh;
-use opencrg::simplify::simplified_mesh;
-use opencrg::synth::RoadSpec;
-use opencrg::tools::{self, ChannelAction, Filter, Layout, LineChannel, Points};
-use opencrg::{Budget, ContactPoint};
+use opencrg_tools::mesh::grid_mesh;
+use opencrg_tools::simplify::simplified_mesh;
+use opencrg_core::synth::RoadSpec;
+use opencrg_tools::{self as tools, ChannelAction, Filter, Layout, LineChannel, Points};
+use opencrg_core::{Budget, ContactPoint};
 use std::sync::Arc;
 
 /// The next number of the input: an f64 from 8 bytes, or one of a few telling values
@@ -73,5 +73,5 @@ fuzz_target!(|input: &[u8]| {
             simplified_mesh(&cp, None, None, number(&mut d), &budget, &mut |_| {}).map(|_| ())
         }
     };
-    let _ = opencrg::roughness::roughness(&road, &[number(&mut d)], number(&mut d));
+    let _ = opencrg_tools::roughness::roughness(&road, &[number(&mut d)], number(&mut d));
 });

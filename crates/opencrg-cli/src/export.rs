@@ -2,10 +2,10 @@
 //! as a texture over the u/v grid: a 16-bit height map, or with `--normal-map` an 8-bit
 //! normal map (PNG).
 
-use opencrg::mesh::{grid_mesh, Mesh};
-use opencrg::mesh_files::{write_mesh, write_whole, MeshFormat};
-use opencrg::simplify::{simplified_mesh, Stage};
-use opencrg::{Budget, ContactPoint};
+use opencrg_core::{Budget, ContactPoint};
+use opencrg_tools::mesh::{grid_mesh, Mesh};
+use opencrg_tools::mesh_files::{write_mesh, write_whole, MeshFormat};
+use opencrg_tools::simplify::{simplified_mesh, Stage};
 use std::path::Path;
 
 /// The u and v ranges of `export` and `view`.
@@ -136,7 +136,7 @@ fn pixel(i: usize, j: usize, nu: usize, nv: usize) -> usize {
 
 /// The 16-bit height map: z from its smallest (0) to its largest value (65535) over the
 /// nodes, 0 where there is none; the range is in the text chunks `z_min` and `z_max`.
-fn height_png(mesh: &opencrg::mesh::Mesh, nu: usize, nv: usize, out: &Path) -> Result<(f64, f64), String> {
+fn height_png(mesh: &opencrg_tools::mesh::Mesh, nu: usize, nv: usize, out: &Path) -> Result<(f64, f64), String> {
     let z = |k: usize| mesh.positions[k][2];
     let (lo, hi) = (0..nu * nv)
         .map(z)
@@ -166,7 +166,13 @@ fn height_png(mesh: &opencrg::mesh::Mesh, nu: usize, nv: usize, out: &Path) -> R
 
 /// The normal map: each node's unit normal in the road's own frame (along u, across to
 /// the left, up) as RGB = (n + 1) / 2 · 255, the convention of tangent-space normal maps.
-fn normal_png(cp: &ContactPoint, mesh: &opencrg::mesh::Mesh, nu: usize, nv: usize, out: &Path) -> Result<(), String> {
+fn normal_png(
+    cp: &ContactPoint,
+    mesh: &opencrg_tools::mesh::Mesh,
+    nu: usize,
+    nv: usize,
+    out: &Path,
+) -> Result<(), String> {
     let mut data = vec![0u8; nu * nv * 3];
     for i in 0..nu {
         for j in 0..nv {

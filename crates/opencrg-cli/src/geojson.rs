@@ -1,7 +1,7 @@
 //! `opencrg export ROAD OUT.geojson`: the reference line and the road's outline in WGS 84
 //! (RFC 7946: longitude, latitude, height), through the road's map projection.
 
-use opencrg::{ContactPoint, Earth, Road};
+use opencrg_core::{ContactPoint, Earth, Road};
 use serde_json::{json, Value};
 use std::path::Path;
 

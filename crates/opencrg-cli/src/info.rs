@@ -1,8 +1,8 @@
 //! `opencrg info`: what a road file holds, as text or JSON.
 
-use opencrg::header::Channel;
-use opencrg::settings::{name, Value};
-use opencrg::{Earth, Road, Settings};
+use opencrg_core::header::Channel;
+use opencrg_core::settings::{name, Value};
+use opencrg_core::{Earth, Road, Settings};
 use serde_json::{json, Value as Json};
 
 fn channel_name(c: &Channel) -> String {

@@ -27,6 +27,7 @@
 
 mod export;
 mod expr;
+mod files;
 mod geojson;
 mod info;
 mod make;
@@ -37,10 +38,11 @@ mod roughness;
 mod view;
 
 use clap::{Parser, Subcommand, ValueEnum};
-use opencrg::settings;
+use files::{load, stdin_pairs, Failure, Format};
+use opencrg_core::settings;
 
-use opencrg::{Budget, ContactPoint, Continuation, CpOption, DataFormat, Road};
-use std::io::{BufRead, Write};
+use opencrg_core::{Budget, ContactPoint, Continuation, CpOption};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::sync::Arc;
@@ -56,7 +58,7 @@ struct Cli {
     command: Command,
     /// The most memory one command may use, like 8G, 512M or 2GiB (default: half of
     /// what the system has available); requests that would need more are refused.
-    #[arg(long, global = true, value_name = "BYTES", value_parser = opencrg::parse_bytes, allow_hyphen_values = true)]
+    #[arg(long, global = true, value_name = "BYTES", value_parser = opencrg_core::parse_bytes, allow_hyphen_values = true)]
     max_memory: Option<u64>,
 }
 
@@ -149,7 +151,7 @@ enum Command {
         #[arg(long = "track", allow_negative_numbers = true)]
         tracks: Vec<f64>,
         /// Length of the IRI's segments [m].
-        #[arg(long, default_value_t = opencrg::roughness::DEFAULT_SEGMENT)]
+        #[arg(long, default_value_t = opencrg_tools::roughness::DEFAULT_SEGMENT)]
         segment: f64,
         /// Print JSON instead of a table.
         #[arg(long)]
@@ -163,30 +165,6 @@ enum Command {
     /// OpenDRIVE maps with CRG surfaces: info, check, eval, render, export, view.
     #[command(subcommand)]
     Odr(odr::OdrCommand),
-}
-
-/// The data formats, named as in files and the specification.
-#[derive(Clone, Copy, ValueEnum)]
-pub(crate) enum Format {
-    #[value(name = "KRBI")]
-    Krbi,
-    #[value(name = "KDBI")]
-    Kdbi,
-    #[value(name = "LRFI")]
-    Lrfi,
-    #[value(name = "LDFI")]
-    Ldfi,
-}
-
-impl From<Format> for DataFormat {
-    fn from(f: Format) -> DataFormat {
-        match f {
-            Format::Krbi => DataFormat::Krbi,
-            Format::Kdbi => DataFormat::Kdbi,
-            Format::Lrfi => DataFormat::Lrfi,
-            Format::Ldfi => DataFormat::Ldfi,
-        }
-    }
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -236,17 +214,6 @@ struct EvalOptions {
     raw: bool,
 }
 
-/// An error for the user: one line.
-type Failure = String;
-
-pub(crate) fn load(path: &Path) -> Result<Road, Failure> {
-    let road = Road::load(path).map_err(|e| e.to_string())?;
-    for w in road.warnings() {
-        eprintln!("opencrg: warning: {w}");
-    }
-    Ok(road)
-}
-
 /// The road prepared as the classic C API prepares it (check, modifiers), and a
 /// contact point with the options asked for.
 fn contact_point(path: &Path, o: &EvalOptions) -> Result<ContactPoint, Failure> {
@@ -274,8 +241,8 @@ fn contact_point(path: &Path, o: &EvalOptions) -> Result<ContactPoint, Failure> 
         o.smooth_end.map(CpOption::SmoothUEnd),
         o.curv_mode.map(|c| {
             CpOption::CurvMode(match c {
-                CurvMode::Lateral => opencrg::CurvMode::Lateral,
-                CurvMode::Refline => opencrg::CurvMode::RefLine,
+                CurvMode::Lateral => opencrg_core::CurvMode::Lateral,
+                CurvMode::Refline => opencrg_core::CurvMode::RefLine,
             })
         }),
         o.close_track.then_some(CpOption::RefLineContinue(Continuation::CloseTrack)),
@@ -291,29 +258,6 @@ fn number(v: Option<f64>) -> String {
         Some(x) if !x.is_nan() => format!("{x}"),
         _ => "nan".into(),
     }
-}
-
-/// Calls `each` with the two numbers of every line of stdin (blank lines and `#`
-/// comments skipped; numbers split by blanks or commas); refused: a line that is not two
-/// numbers, named by its number.
-pub(crate) fn stdin_pairs(mut each: impl FnMut(f64, f64) -> Result<(), Failure>) -> Result<(), Failure> {
-    for (k, line) in std::io::stdin().lock().lines().enumerate() {
-        let line = line.map_err(|e| format!("stdin: {e}"))?;
-        let text = line.trim();
-        if text.is_empty() || text.starts_with('#') {
-            continue;
-        }
-        let bad = || format!("stdin:{}: '{text}' is not two numbers", k + 1);
-        let values: Vec<f64> = text
-            .split(|c: char| c.is_whitespace() || c == ',')
-            .filter(|s| !s.is_empty())
-            .map(str::parse)
-            .collect::<Result<_, _>>()
-            .map_err(|_| bad())?;
-        let [a, b] = values[..] else { return Err(bad()) };
-        each(a, b)?;
-    }
-    Ok(())
 }
 
 /// Reads point lines from stdin and writes the CSV.
@@ -371,7 +315,7 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
         }
         Command::Check { road } => {
             let mut r = load(&road)?;
-            for sentence in opencrg::map_disagreements(&r) {
+            for sentence in opencrg_core::map_disagreements(&r) {
                 eprintln!("opencrg: warning: {}: {sentence}", road.display());
             }
             return Ok(match r.check() {
@@ -387,7 +331,7 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
         }
         Command::Convert { input, output, format } => {
             let r = load(&input)?;
-            opencrg::write(&r, &output, format.into()).map_err(|e| e.to_string())?;
+            opencrg_core::write(&r, &output, format.into()).map_err(|e| e.to_string())?;
         }
         Command::Eval { road, xy, options } => {
             let mut cp = contact_point(&road, &options)?;
@@ -461,8 +405,8 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
                 eprintln!("opencrg: warning: {}: {e}", road.display());
             }
             r.apply_modifiers();
-            let tracks = if tracks.is_empty() { opencrg::roughness::DEFAULT_TRACKS.to_vec() } else { tracks };
-            let found = opencrg::roughness::roughness(&Arc::new(r), &tracks, segment)
+            let tracks = if tracks.is_empty() { opencrg_tools::roughness::DEFAULT_TRACKS.to_vec() } else { tracks };
+            let found = opencrg_tools::roughness::roughness(&Arc::new(r), &tracks, segment)
                 .map_err(|e| format!("{}: {e}", road.display()))?;
             for t in found.iter().filter(|t| t.skipped > 0.0) {
                 eprintln!("opencrg: warning: track at v = {} m: {:.2} m without elevation left out", t.v, t.skipped);

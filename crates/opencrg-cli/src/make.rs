@@ -3,11 +3,12 @@
 //! header, not applied), writes its result all or nothing, and says what it wrote.
 
 use crate::export::parse_range;
-use crate::{expr, load, Format};
+use crate::expr;
+use crate::files::{load, Format};
 use clap::{ArgGroup, Args, Subcommand};
-use opencrg::tools::{self, ChannelAction, Filter, Import, Layout, LineChannel};
-use opencrg::units::Metres;
-use opencrg::{Budget, ContactPoint, DataFormat, Road};
+use opencrg_core::units::Metres;
+use opencrg_core::{Budget, ContactPoint, DataFormat, Road};
+use opencrg_tools::{self as tools, ChannelAction, Filter, Import, Layout, LineChannel};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -223,7 +224,7 @@ fn data_format(f: Option<Format>, default: DataFormat) -> DataFormat {
 
 /// Writes the road and says so.
 fn save(road: &Road, out: &Path, format: DataFormat) -> Result<(), String> {
-    opencrg::write(road, out, format).map_err(|e| e.to_string())?;
+    opencrg_core::write(road, out, format).map_err(|e| e.to_string())?;
     let (nu, nv) = (road.grid().nu, road.grid().nv);
     let ((u0, u1), (v0, v1)) = (road.u_range(), road.v_range());
     eprintln!(
@@ -244,7 +245,7 @@ fn remake(
     input: &Path,
     output: &Path,
     format: &OutputFormat,
-    make: impl FnOnce(&Arc<Road>) -> opencrg::Result<Road>,
+    make: impl FnOnce(&Arc<Road>) -> opencrg_core::Result<Road>,
 ) -> Result<(), String> {
     let road = Arc::new(load(input)?);
     let made = make(&road).map_err(named(input))?;
@@ -268,7 +269,7 @@ fn progress_bar() -> indicatif::ProgressBar {
 }
 
 /// A tool's refusal as one line naming the file it was about.
-fn named(path: &Path) -> impl Fn(opencrg::Error) -> String + '_ {
+fn named(path: &Path) -> impl Fn(opencrg_core::Error) -> String + '_ {
     move |e| format!("{}: {e}", path.display())
 }
 

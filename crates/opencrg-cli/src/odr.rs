@@ -4,9 +4,10 @@
 //! writes the drivable surface as a mesh, `view` shows it in the browser.
 
 use clap::Subcommand;
-use opencrg::mesh_files::{write_mesh, write_whole, MeshFormat};
-use opencrg::Budget;
-use opencrg_odr::{map_mesh, CrgMode, Map, MeshOptions, Surface};
+use opencrg_core::Budget;
+use opencrg_odr::{CrgMode, Map, Surface};
+use opencrg_tools::map_mesh::{map_mesh, MeshOptions};
+use opencrg_tools::mesh_files::{write_mesh, write_whole, MeshFormat};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -178,7 +179,7 @@ fn eval(path: &Path) -> Result<(), String> {
     let mut probe = surface.probe();
     let mut out = std::io::BufWriter::new(std::io::stdout().lock());
     let io = |e: std::io::Error| format!("stdout: {e}");
-    crate::stdin_pairs(|x, y| match probe.ground(x, y) {
+    crate::files::stdin_pairs(|x, y| match probe.ground(x, y) {
         Some(g) => {
             let road = &surface.map().roads[g.road].id;
             writeln!(out, "{} {} {road} {} {}", number(g.z), number(g.friction), g.s, g.t).map_err(io)

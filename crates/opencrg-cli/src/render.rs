@@ -2,7 +2,7 @@
 //! a colour bar and a scale bar; and sections along u or across v as line plots.
 
 use crate::plot::{self, font, tick, Area, Figure, Image, LABEL, TITLE};
-use opencrg::{Budget, ContactPoint};
+use opencrg_core::{Budget, ContactPoint};
 use plotters::prelude::*;
 
 /// The memory a pixel of the top view takes while it is made (elevation, slope and its

@@ -3,8 +3,8 @@
 //! bands, the IRI segment by segment along u).
 
 use crate::plot::{self, font, tick, Figure, AXIS, TITLE};
-use opencrg::psd::{CLASSES, CLASS_LIMITS, N0};
-use opencrg::roughness::Track;
+use opencrg_tools::psd::{CLASSES, CLASS_LIMITS, N0};
+use opencrg_tools::roughness::Track;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde_json::{json, Value};

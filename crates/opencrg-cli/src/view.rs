@@ -4,9 +4,9 @@
 //! cross section.
 
 use crate::export::Range;
-use opencrg::mesh::grid_mesh_every;
-use opencrg::mesh_files::{write_mesh_to, write_whole, MeshFormat};
-use opencrg::{Budget, ContactPoint};
+use opencrg_core::{Budget, ContactPoint};
+use opencrg_tools::mesh::grid_mesh_every;
+use opencrg_tools::mesh_files::{write_mesh_to, write_whole, MeshFormat};
 use std::io::Write;
 use std::path::Path;
 
@@ -17,7 +17,7 @@ const PAGE: &str = include_str!("viewer.html");
 
 /// The viewer page of `mesh` with `lines` over it; `info` (HTML) heads it.
 pub fn page(
-    mesh: &opencrg::mesh::Mesh,
+    mesh: &opencrg_tools::mesh::Mesh,
     title: &str,
     info: &str,
     lines: &[Vec<[f64; 3]>],

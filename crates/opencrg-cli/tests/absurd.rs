@@ -4,7 +4,7 @@
 //! memory.
 #![cfg(target_os = "linux")]
 
-use opencrg::synth::RoadSpec;
+use opencrg_core::synth::RoadSpec;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Duration, Instant};

@@ -1,7 +1,7 @@
 //! `opencrg odr`: info on a shared map, check on a clean and a broken map, eval on a map
 //! with CRG records (plane CRG files, answers against closed forms).
 
-use opencrg::synth::RoadSpec;
+use opencrg_core::synth::RoadSpec;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};

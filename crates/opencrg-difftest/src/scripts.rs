@@ -4,7 +4,7 @@
 //! nodes, points far outside, and paths that carry the x/y search history along.
 
 use crate::rng::Rng;
-use opencrg::settings::{m, opt};
+use opencrg_core::settings::{m, opt};
 use std::fmt::Write as _;
 
 /// Modifiers with values worth trying: (id, integer?, values).

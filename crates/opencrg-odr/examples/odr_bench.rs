@@ -9,7 +9,7 @@
 //!   `ContactPoint::xy_to_z` on the same CRG file along paths of the same length;
 //! - `random MAP`: ground queries at random points of the map's extent, queries per second.
 
-use opencrg::synth::RoadSpec;
+use opencrg_core::synth::RoadSpec;
 use opencrg_odr::{Map, Surface};
 use std::path::Path;
 use std::sync::Arc;
@@ -93,8 +93,8 @@ fn wheels(dir: &str, from: f64, steps: usize) {
     }
     let ns = t.elapsed().as_secs_f64() * 1e9 / (4 * steps) as f64;
     // The same CRG file alone along straight paths of the same length and step.
-    let crg_road = Arc::new(opencrg::Road::load(&crg).unwrap());
-    let mut cps: Vec<_> = (0..4).map(|_| opencrg::ContactPoint::new(crg_road.clone())).collect();
+    let crg_road = Arc::new(opencrg_core::Road::load(&crg).unwrap());
+    let mut cps: Vec<_> = (0..4).map(|_| opencrg_core::ContactPoint::new(crg_road.clone())).collect();
     let t = Instant::now();
     let mut sum2 = 0.0;
     for i in 0..steps {

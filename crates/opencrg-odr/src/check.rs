@@ -80,7 +80,7 @@ fn record_findings(
     }
     let unusable = files
         .entry(record.path.clone())
-        .or_insert_with(|| opencrg::Road::load(&record.path).err().map(|e| e.to_string()));
+        .or_insert_with(|| opencrg_core::Road::load(&record.path).err().map(|e| e.to_string()));
     if let Some(e) = unusable {
         find(format!("the CRG file cannot be used: {e}"));
     }

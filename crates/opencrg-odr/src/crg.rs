@@ -4,8 +4,8 @@
 //! orientation (`../shared/spec/opendrive-crg.md`).
 
 use crate::map::{CrgMode, CrgOrientation, CrgRecord, Map, Road};
-use opencrg::tools::{change_channel, ChannelAction, LineChannel};
-use opencrg::{ContactPoint, Error, Location, Result};
+use opencrg_core::draft::Draft;
+use opencrg_core::{ContactPoint, Error, Location, Result};
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -14,9 +14,9 @@ use std::sync::Arc;
 /// disregards its reference line's height and banking).
 pub(crate) struct CrgFile {
     /// The file as read, its own modifiers applied.
-    pub whole: Arc<opencrg::Road>,
+    pub whole: Arc<opencrg_core::Road>,
     /// Its grid on a level reference line at height `base`.
-    pub grid: Arc<opencrg::Road>,
+    pub grid: Arc<opencrg_core::Road>,
     /// The level reference line's height.
     pub base: f64,
 }
@@ -31,16 +31,22 @@ pub(crate) struct CrgFiles {
 
 /// Reads a CRG file for a map: its modifiers only if it gives some.
 fn load(path: &std::path::Path) -> Result<CrgFile> {
-    let mut road = opencrg::Road::load(path)?;
+    let mut road = opencrg_core::Road::load(path)?;
     if !road.header().modifiers_given {
         road.modifiers_mut().clear();
     }
     let line = road.reference_line();
     let climbs = line.slope.is_some() || line.z.is_some() || line.z_first != 0.0;
-    let mut flat =
-        if climbs { change_channel(&road, LineChannel::Slope, ChannelAction::Remove)? } else { road.clone() };
-    if flat.reference_line().has_bank {
-        flat = change_channel(&flat, LineChannel::Banking, ChannelAction::Remove)?;
+    let mut flat = road.clone();
+    if climbs || line.has_bank {
+        // The grid alone: the line's slope, start height and banking dropped.
+        let mut d = Draft::of(&road);
+        if climbs {
+            d.slope = None;
+            d.z_start = 0.0;
+        }
+        d.bank = None;
+        flat = d.into_road("the grid alone, as attached records lay it")?;
     }
     road.apply_modifiers();
     flat.apply_modifiers();

@@ -12,7 +12,7 @@ use crate::map::{CrgPurpose, Junction, Map, Road};
 use crate::patch::{Patch, Patches};
 use crate::surface::{height_across, span_height};
 use crate::trig;
-use opencrg::Result;
+use opencrg_core::Result;
 use std::collections::BTreeMap;
 use std::path::Path;
 use std::sync::Arc;
@@ -80,7 +80,7 @@ impl Surface {
     }
 
     /// Where on road `road` (index) the elevation records start and end (s).
-    pub(crate) fn crg_bounds(&self, road: usize) -> impl Iterator<Item = f64> + '_ {
+    pub fn crg_bounds(&self, road: usize) -> impl Iterator<Item = f64> + '_ {
         self.layers[road]
             .iter()
             .filter(|l| l.record.purpose == CrgPurpose::Elevation)
@@ -89,7 +89,7 @@ impl Surface {
 
     /// The grid increments (du, dv) of the CRG file whose elevation record holds at s of
     /// road `road` (index), if one does.
-    pub(crate) fn elevation_detail(&self, road: usize, s: f64) -> Option<(f64, f64)> {
+    pub fn elevation_detail(&self, road: usize, s: f64) -> Option<(f64, f64)> {
         let layer = self.layers[road]
             .iter()
             .rev()

@@ -13,7 +13,7 @@
 //! let map = opencrg_odr::Map::load("town.xodr")?;
 //! let road = map.road("12").unwrap();
 //! let [x, y, z] = road.surface_point(25.0, -1.75);
-//! # Ok::<(), opencrg::Error>(())
+//! # Ok::<(), opencrg_core::Error>(())
 //! ```
 #![warn(missing_docs)]
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
@@ -26,7 +26,6 @@ mod lanes;
 mod last_wins;
 mod locate;
 mod map;
-mod mesh;
 mod patch;
 mod profile;
 mod quadrature;
@@ -41,6 +40,5 @@ pub use ground::{Ground, Probe, Surface};
 pub use lanes::{Height, Lane, LaneSection, LaneSpan, Lanes, Material};
 pub use locate::{RoadIndex, RoadPos};
 pub use map::{CrgMode, CrgOrientation, CrgPurpose, CrgRecord, Header, Junction, Map, Road, ShapeGroup};
-pub use mesh::{map_mesh, MeshOptions, DEFAULT_ERROR};
 pub use profile::{Cubic, Profile};
 pub use surface::RefPoint;

@@ -8,7 +8,7 @@ use crate::lanes::{Height, Lane, LaneSection, Lanes, Material};
 use crate::map::{CrgMode, CrgOrientation, CrgPurpose, CrgRecord, Header, Junction, Map, Road, ShapeGroup};
 use crate::profile::{Cubic, Profile};
 use crate::xml::{Node, Tree};
-use opencrg::{Error, Location, Result};
+use opencrg_core::{Error, Location, Result};
 use std::path::{Path, PathBuf};
 
 /// Where the reader is: the file, and where its lines start (for line numbers).

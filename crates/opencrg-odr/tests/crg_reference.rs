@@ -8,7 +8,7 @@
 //! (test.sh builds the reference with `../shared/reference/build-references.sh` and
 //! `tests/oracle/crg_reference_answers.c` against it).
 
-use opencrg::synth::RoadSpec;
+use opencrg_core::synth::RoadSpec;
 use opencrg_odr::{Map, Surface};
 use std::path::Path;
 use std::sync::Arc;
@@ -106,7 +106,7 @@ fn every_mode_agrees_with_the_reference_library() {
                 "genuine" => {
                     let at = road.reference(r.s_offset);
                     let (x0, y0) = (at.x - r.t_offset * at.hdg.sin(), at.y + r.t_offset * at.hdg.cos());
-                    let crg = opencrg::Road::load(dir.join(file)).unwrap();
+                    let crg = opencrg_core::Road::load(dir.join(file)).unwrap();
                     let line = crg.reference_line();
                     let a = at.hdg + r.h_offset - line.phi_first;
                     let (dx, dy) = (p[0] - x0, p[1] - y0);

@@ -3,7 +3,7 @@
 //! with plane CRG files (z = a u + b v + c on a reference line that climbs and is banked,
 //! which the attached mode must disregard).
 
-use opencrg::synth::RoadSpec;
+use opencrg_core::synth::RoadSpec;
 use opencrg_odr::{Map, Surface};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -188,7 +188,7 @@ fn attached0_records_give_the_crg_height_whole() {
         r#"<CRG file="plane.crg" sStart="0" sEnd="60" mode="attached0" orientation="same" sOffset="5" zScale="1.5"/>"#,
     );
     let mut probe = surface.probe();
-    let crg = opencrg::ContactPoint::new(Arc::new(opencrg::Road::load(d.join("plane.crg")).unwrap()));
+    let crg = opencrg_core::ContactPoint::new(Arc::new(opencrg_core::Road::load(d.join("plane.crg")).unwrap()));
     for (s, t) in [(6.0, 0.5), (20.0, -1.5)] {
         let p = road_point(&surface, s, t);
         let (u, v) = (s - 5.0, t);

@@ -1,7 +1,7 @@
 //! A wheel's queries allocate nothing once its probe has met the road: the ground along
 //! a road with an attached CRG file, counted by a global allocator that counts.
 
-use opencrg::synth::RoadSpec;
+use opencrg_core::synth::RoadSpec;
 use opencrg_odr::Surface;
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};

@@ -3,8 +3,8 @@
 use crate::evaluation::{evaluate, for_each_evaluation, set_option, set_options, Call};
 use crate::names;
 use crate::road::Road;
-use ::opencrg as crg;
-use ::opencrg::settings::Family;
+use ::opencrg_core as crg;
+use ::opencrg_core::settings::Family;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 

@@ -7,7 +7,7 @@
 //! `opencrg.RequestError` (also a `ValueError`). Every text names the file, and the line
 //! and field where one is known.
 
-use ::opencrg::{Budget, Error};
+use ::opencrg_core::{Budget, Error};
 use pyo3::exceptions::{PyException, PyFileNotFoundError, PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
@@ -77,7 +77,7 @@ pub(crate) fn budget(max_memory: Option<&Bound<'_, PyAny>>) -> PyResult<Budget> 
             .filter(|&n| n > 0)
             .ok_or_else(|| request_error(format!("max_memory={n}: at least one byte")))?
     } else if let Ok(text) = given.extract::<String>() {
-        ::opencrg::parse_bytes(&text).map_err(|e| request_error(format!("max_memory={e}")))?
+        ::opencrg_core::parse_bytes(&text).map_err(|e| request_error(format!("max_memory={e}")))?
     } else {
         return Err(request_error("max_memory: bytes as an int, or a text like '8G' or '512MiB'"));
     };

@@ -4,8 +4,8 @@
 use crate::arrays::Points;
 use crate::errors;
 use crate::names;
-use ::opencrg as crg;
-use ::opencrg::settings::Family;
+use ::opencrg_core as crg;
+use ::opencrg_core::settings::Family;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 

@@ -6,7 +6,7 @@ use crate::arrays::Points;
 use crate::errors;
 use crate::recipe::Step;
 use crate::road::Road;
-use ::opencrg as crg;
+use ::opencrg_core as crg;
 use pyo3::prelude::*;
 
 /// Converts every point of three broadcast coordinates with `f`; NaN where it fails.

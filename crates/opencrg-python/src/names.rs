@@ -2,9 +2,9 @@
 //! file keyword in lower case (`border_mode_u`, `refline_offset_phi`), or, for a setting
 //! files cannot carry, its C constant without prefix in snake case (`curv_mode`).
 
-use ::opencrg::settings::{self, Accepts, Family, Kind, SettingInfo, Settings, Value, SETTINGS};
-use ::opencrg::settings::{BorderMode, NanMode};
-use ::opencrg::{Continuation, CurvMode};
+use ::opencrg_core::settings::{self, Accepts, Family, Kind, SettingInfo, Settings, Value, SETTINGS};
+use ::opencrg_core::settings::{BorderMode, NanMode};
+use ::opencrg_core::{Continuation, CurvMode};
 use pyo3::exceptions::{PyKeyError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;

@@ -192,11 +192,11 @@ impl Map {
         lanes: Option<Vec<String>>,
         max_memory: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<()> {
-        let format = opencrg::mesh_files::MeshFormat::from_path(&path).ok_or_else(|| {
+        let format = opencrg_tools::mesh_files::MeshFormat::from_path(&path).ok_or_else(|| {
             request_error(format!("{}: unknown mesh format; .glb, .obj, .ply or .stl", path.display()))
         })?;
         let mesh = self.mesh(py, max_error, roads, lanes, max_memory)?;
-        py.detach(|| opencrg::mesh_files::write_mesh(&mesh, &path, format)).map_err(to_py)
+        py.detach(|| opencrg_tools::mesh_files::write_mesh(&mesh, &path, format)).map_err(to_py)
     }
 
     /// The world point (x, y, z) of the surface at (s, t) of the road `road` (its id),
@@ -236,11 +236,11 @@ impl Map {
         roads: Option<Vec<String>>,
         lanes: Option<Vec<String>>,
         max_memory: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<opencrg::mesh::Mesh> {
+    ) -> PyResult<opencrg_tools::mesh::Mesh> {
         let budget = crate::errors::budget(max_memory)?;
-        let options = opencrg_odr::MeshOptions { roads, lane_types: lanes, max_error };
+        let options = opencrg_tools::map_mesh::MeshOptions { roads, lane_types: lanes, max_error };
         let surface = self.surface.clone();
-        py.detach(|| opencrg_odr::map_mesh(&surface, &options, &budget)).map_err(to_py)
+        py.detach(|| opencrg_tools::map_mesh::map_mesh(&surface, &options, &budget)).map_err(to_py)
     }
 }
 

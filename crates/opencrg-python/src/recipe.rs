@@ -7,9 +7,9 @@
 //! worker sharing the file system), and a file that changed meanwhile is refused. A road
 //! made from bytes carries the bytes.
 
-use ::opencrg as crg;
-use ::opencrg::settings::Value;
-use ::opencrg::{Compat, LoadOptions};
+use ::opencrg_core as crg;
+use ::opencrg_core::settings::Value;
+use ::opencrg_core::{Compat, LoadOptions};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyTuple};
 use std::path::{Path, PathBuf};

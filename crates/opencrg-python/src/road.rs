@@ -5,9 +5,9 @@ use crate::errors;
 use crate::evaluation::{evaluate, for_each_evaluation, set_options, Call};
 use crate::names;
 use crate::recipe::{Recipe, Step};
-use ::opencrg as crg;
-use ::opencrg::settings::Family;
-use ::opencrg::{Compat, DataFormat, LoadOptions};
+use ::opencrg_core as crg;
+use ::opencrg_core::settings::Family;
+use ::opencrg_core::{Compat, DataFormat, LoadOptions};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
@@ -117,13 +117,13 @@ impl Road {
         max_error: Option<f64>,
         max_memory: Option<&Bound<'_, PyAny>>,
         options: Option<&Bound<'_, PyDict>>,
-    ) -> PyResult<crg::mesh::Mesh> {
+    ) -> PyResult<::opencrg_tools::mesh::Mesh> {
         let mut cp = crg::ContactPoint::new(self.shared());
         set_options(&mut cp, options)?;
         let budget = errors::budget(max_memory)?;
         py.detach(|| match max_error {
-            Some(bound) => crg::simplify::simplified_mesh(&cp, u, v, bound, &budget, &mut |_| {}),
-            None => crg::mesh::grid_mesh(&cp, u, v, &budget),
+            Some(bound) => ::opencrg_tools::simplify::simplified_mesh(&cp, u, v, bound, &budget, &mut |_| {}),
+            None => ::opencrg_tools::mesh::grid_mesh(&cp, u, v, &budget),
         })
         .map_err(errors::to_py)
     }
@@ -369,21 +369,22 @@ impl Road {
         max_memory: Option<&Bound<'py, PyAny>>,
         options: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<()> {
-        let format = crg::mesh_files::MeshFormat::from_path(&path).ok_or_else(|| {
+        let format = ::opencrg_tools::mesh_files::MeshFormat::from_path(&path).ok_or_else(|| {
             crate::errors::request_error(format!("{}: unknown mesh format; .obj, .stl, .ply or .glb", path.display()))
         })?;
         let mesh = self.mesh(py, u, v, max_error, max_memory, options)?;
-        py.detach(|| crg::mesh_files::write_mesh(&mesh, &path, format)).map_err(errors::to_py)
+        py.detach(|| ::opencrg_tools::mesh_files::write_mesh(&mesh, &path, format)).map_err(errors::to_py)
     }
 
     /// How rough the road is along wheel tracks at `tracks` (v in m; default -0.85, 0 and
     /// 0.85): per track the IRI (m/km) over it and per `segment` metres, and the ISO 8608
     /// density, fit and class; a list of dicts (see the guide).
-    #[pyo3(signature = (tracks = None, segment = crg::roughness::DEFAULT_SEGMENT))]
+    #[pyo3(signature = (tracks = None, segment = ::opencrg_tools::roughness::DEFAULT_SEGMENT))]
     fn roughness<'py>(&self, py: Python<'py>, tracks: Option<Vec<f64>>, segment: f64) -> PyResult<Bound<'py, PyList>> {
-        let tracks = tracks.unwrap_or_else(|| crg::roughness::DEFAULT_TRACKS.to_vec());
+        let tracks = tracks.unwrap_or_else(|| ::opencrg_tools::roughness::DEFAULT_TRACKS.to_vec());
         let road = self.shared();
-        let found = py.detach(|| crg::roughness::roughness(&road, &tracks, segment)).map_err(errors::to_py)?;
+        let found =
+            py.detach(|| ::opencrg_tools::roughness::roughness(&road, &tracks, segment)).map_err(errors::to_py)?;
         crate::roughness::tracks_list(py, &found)
     }
 

@@ -3,14 +3,13 @@
 
 use crate::errors;
 use numpy::{AllowTypeChange, PyArray1, PyArrayLike1};
-use opencrg as crg;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use pyo3::IntoPyObjectExt;
 
 /// A spectrum as a dict: `gd_n0` (m³, w = 2), `w` and `gd_n0_fitted_w` (w fitted too),
 /// `class`, `n_fitted`, `bands_n` and `bands_gd` (numpy), `segment_samples`, `segments`.
-pub(crate) fn spectrum_dict<'py>(py: Python<'py>, s: &crg::psd::Spectrum) -> PyResult<Bound<'py, PyDict>> {
+pub(crate) fn spectrum_dict<'py>(py: Python<'py>, s: &::opencrg_tools::psd::Spectrum) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
     d.set_item("gd_n0", s.gd_n0)?;
     d.set_item("w", s.w)?;
@@ -27,7 +26,10 @@ pub(crate) fn spectrum_dict<'py>(py: Python<'py>, s: &crg::psd::Spectrum) -> PyR
 /// The tracks as a list of dicts: `v`, `iri` (m/km), `skipped_m`, `segments` (a list of
 /// dicts `u_start`, `u_end`, `iri`, None where nothing was driven), `psd` (see
 /// [`spectrum_dict`]).
-pub(crate) fn tracks_list<'py>(py: Python<'py>, tracks: &[crg::roughness::Track]) -> PyResult<Bound<'py, PyList>> {
+pub(crate) fn tracks_list<'py>(
+    py: Python<'py>,
+    tracks: &[::opencrg_tools::roughness::Track],
+) -> PyResult<Bound<'py, PyList>> {
     let list = PyList::empty(py);
     for t in tracks {
         let d = PyDict::new(py);
@@ -53,9 +55,9 @@ pub(crate) fn tracks_list<'py>(py: Python<'py>, tracks: &[crg::roughness::Track]
 /// `ISO8608_LIMITS` (the upper limits of Gd(n0) of classes A to G, m³) and
 /// `ISO8608_CLASSES` ("ABCDEFGH").
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add("ISO8608_N0", crg::psd::N0)?;
-    m.add("ISO8608_LIMITS", crg::psd::CLASS_LIMITS.to_vec())?;
-    m.add("ISO8608_CLASSES", crg::psd::CLASSES.iter().collect::<String>())?;
+    m.add("ISO8608_N0", ::opencrg_tools::psd::N0)?;
+    m.add("ISO8608_LIMITS", ::opencrg_tools::psd::CLASS_LIMITS.to_vec())?;
+    m.add("ISO8608_CLASSES", ::opencrg_tools::psd::CLASSES.iter().collect::<String>())?;
     Ok(())
 }
 
@@ -72,10 +74,10 @@ pub(crate) fn iri<'py>(
     segment: Option<f64>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let z: Vec<f64> = profile.as_array().iter().copied().collect();
-    let r = py.detach(|| crg::iri::response(&z, dx)).map_err(errors::to_py)?;
+    let r = py.detach(|| ::opencrg_tools::iri::response(&z, dx)).map_err(errors::to_py)?;
     let Some(segment) = segment else { return r.iri().into_bound_py_any(py) };
     let length = z.len().saturating_sub(1) as f64 * dx;
-    let parts = crg::iri::segment_iris(&[(0.0, &r)], length, segment).map_err(errors::to_py)?;
+    let parts = ::opencrg_tools::iri::segment_iris(&[(0.0, &r)], length, segment).map_err(errors::to_py)?;
     let parts = parts.into_iter().map(|x| x.unwrap_or(f64::NAN));
     (r.iri(), PyArray1::from_iter(py, parts)).into_bound_py_any(py)
 }
@@ -89,6 +91,6 @@ pub(crate) fn psd<'py>(
     dx: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
     let z: Vec<f64> = profile.as_array().iter().copied().collect();
-    let s = py.detach(|| crg::psd::spectrum(&z, dx)).map_err(errors::to_py)?;
+    let s = py.detach(|| ::opencrg_tools::psd::spectrum(&z, dx)).map_err(errors::to_py)?;
     spectrum_dict(py, &s)
 }

@@ -6,8 +6,8 @@
 use crate::errors::{budget, request_error, to_py};
 use crate::recipe::Recipe;
 use crate::road::Road;
-use ::opencrg as crg;
-use crg::tools::{self, ChannelAction, Filter, Import, Layout, LineChannel, Points};
+use ::opencrg_core as crg;
+use ::opencrg_tools::{self as tools, ChannelAction, Filter, Import, Layout, LineChannel, Points};
 use numpy::{PyArray2, PyArrayMethods, PyReadonlyArray2};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;

@@ -14,8 +14,8 @@ use crate::profile;
 use crate::ptr::{in_str, input, out};
 use crate::registry;
 use crate::report;
-use opencrg::settings::{describe, name, Family, Kind, Value};
-use opencrg::{ContactPoint, Road, Settings};
+use opencrg_core::settings::{describe, name, Family, Kind, Value};
+use opencrg_core::{ContactPoint, Road, Settings};
 use std::ffi::{c_char, c_int, c_uint, c_void};
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -74,7 +74,7 @@ pub(crate) fn road_write<R: Copy>(func: &str, id: c_int, on_error: R, f: impl Fn
     guard(func, on_error, || on_road_mut(func, id, f).unwrap_or(on_error))
 }
 
-fn ok(r: opencrg::Result<()>, func: &str) -> c_int {
+fn ok(r: opencrg_core::Result<()>, func: &str) -> c_int {
     match r {
         Ok(()) => 1,
         Err(e) => {
@@ -108,7 +108,7 @@ pub unsafe extern "C" fn crgLoaderReadFile(filename: *const c_char) -> c_int {
             }
         };
         // The statistics block costs a scan of the grid: only when it will be printed.
-        let options = opencrg::LoadOptions { compat, report_statistics: msg::level() >= msg::NOTICE };
+        let options = opencrg_core::LoadOptions { compat, report_statistics: msg::level() >= msg::NOTICE };
         match Road::load_with(&path, options) {
             Ok(mut road) => {
                 // The file's WARN_MSGS counts the messages of its own loading, as the
@@ -125,8 +125,7 @@ pub unsafe extern "C" fn crgLoaderReadFile(filename: *const c_char) -> c_int {
                 id
             }
             Err(e) => {
-                let not_found =
-                    matches!(&e, opencrg::Error::Io { source, .. } if source.kind() == std::io::ErrorKind::NotFound);
+                let not_found = matches!(&e, opencrg_core::Error::Io { source, .. } if source.kind() == std::io::ErrorKind::NotFound);
                 if !(not_found && SUPPRESS_NOT_FOUND.load(Ordering::Relaxed)) {
                     msg::fatal(&format!("crgLoaderReadFile: {e}"));
                 }
@@ -150,7 +149,7 @@ pub extern "C" fn crgCheck(dataSetId: c_int) -> c_int {
             return 0;
         };
         report::send("crgCheck", events);
-        if let Some(found) = on_road("crgCheck", dataSetId, opencrg::map_disagreements) {
+        if let Some(found) = on_road("crgCheck", dataSetId, opencrg_core::map_disagreements) {
             for sentence in found {
                 msg::warn(&format!("crgCheck: {sentence}"));
             }
@@ -442,7 +441,7 @@ pub extern "C" fn crgDataPrintHeader(dataSetId: c_int) {
 #[no_mangle]
 pub extern "C" fn crgDataPrintChannelInfo(dataSetId: c_int) {
     road_read("crgDataPrintChannelInfo", dataSetId, (), |r| {
-        use opencrg::header::Channel;
+        use opencrg_core::header::Channel;
         let h = r.header();
         let g = r.grid();
         let send = |level, text: String| msg::send(level, &text);
@@ -757,7 +756,7 @@ fn eval2(
     cp_id: c_int,
     a: Option<&mut f64>,
     b: Option<&mut f64>,
-    f: impl FnOnce(&mut ContactPoint) -> opencrg::Result<(f64, f64)>,
+    f: impl FnOnce(&mut ContactPoint) -> opencrg_core::Result<(f64, f64)>,
 ) -> c_int {
     two_out(a, b, || cp_call(func, cp_id, None, |cp| f(cp).ok()))
 }
@@ -768,7 +767,7 @@ fn eval1(
     func: &str,
     cp_id: c_int,
     out: Option<&mut f64>,
-    f: impl FnOnce(&mut ContactPoint) -> opencrg::Result<f64>,
+    f: impl FnOnce(&mut ContactPoint) -> opencrg_core::Result<f64>,
 ) -> c_int {
     let Some(out) = out else { return 0 };
     cp_call(func, cp_id, 0, |cp| match f(cp) {
@@ -812,7 +811,7 @@ fn xy2uv_general(cpId: c_int, declined: bool, x: f64, y: f64, u: &mut f64, v: &m
 
 /// The x/y search of the general way: without a second try of the lean search where it
 /// just declined.
-fn search_xy(cp: &mut ContactPoint, declined: bool, x: f64, y: f64) -> opencrg::Result<(f64, f64)> {
+fn search_xy(cp: &mut ContactPoint, declined: bool, x: f64, y: f64) -> opencrg_core::Result<(f64, f64)> {
     if declined {
         cp.xy_to_uv_general(x, y)
     } else {

@@ -8,7 +8,7 @@
 use crate::api::{cp_call, road_read};
 use crate::ptr::{in_array as input, in_str, out, out_array as output};
 use crate::{c_path, constants, msg};
-use opencrg::{ContactPoint, DataFormat};
+use opencrg_core::{ContactPoint, DataFormat};
 use std::ffi::{c_char, c_int};
 
 /// Runs a batch on a contact point: two inputs, `K` outputs of `n` values each.
@@ -124,7 +124,7 @@ pub unsafe extern "C" fn crgEvalxy2pkN(
 
 /// Writes an elevation and a normal through the pointers that are not NULL; 1, or 0
 /// (and nothing written) when the evaluation failed.
-fn put_normal(answer: opencrg::Result<(f64, [f64; 3])>, outs: [Option<&mut f64>; 4]) -> c_int {
+fn put_normal(answer: opencrg_core::Result<(f64, [f64; 3])>, outs: [Option<&mut f64>; 4]) -> c_int {
     let Ok((value, [nx, ny, nz])) = answer else { return 0 };
     for (slot, v) in outs.into_iter().zip([value, nx, ny, nz]) {
         if let Some(slot) = slot {
@@ -315,7 +315,7 @@ pub unsafe extern "C" fn crgDataSetWrite(dataSetId: c_int, filename: *const c_ch
     };
     let path = c_path::path_of(filename);
     let mut failure = None;
-    let done = road_read("crgDataSetWrite", dataSetId, 0, |road| match opencrg::write(road, &path, format) {
+    let done = road_read("crgDataSetWrite", dataSetId, 0, |road| match opencrg_core::write(road, &path, format) {
         Ok(()) => 1,
         Err(e) => {
             failure = Some(e.to_string());

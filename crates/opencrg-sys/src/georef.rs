@@ -8,8 +8,8 @@
 
 use crate::api::{cp_call, road_read, road_write};
 use crate::ptr::out;
-use opencrg::georef::GlobalOrigin;
-use opencrg::{ContactPoint, Earth};
+use opencrg_core::georef::GlobalOrigin;
+use opencrg_core::{ContactPoint, Earth};
 use std::ffi::c_int;
 
 thread_local! {
@@ -20,7 +20,7 @@ thread_local! {
 
 /// `f` with the chain of the road's map projection (built again only when the projection
 /// differs from the last one this thread used); `None` for a road without one.
-fn with_earth<T>(road: &opencrg::Road, f: impl FnOnce(&Earth) -> Option<T>) -> Option<T> {
+fn with_earth<T>(road: &opencrg_core::Road, f: impl FnOnce(&Earth) -> Option<T>) -> Option<T> {
     let map = road.header().map.as_ref()?;
     LAST_EARTH.with(|cell| {
         let mut last = cell.borrow_mut();
@@ -37,7 +37,7 @@ fn on_cp_road(
     func: &str,
     cp_id: c_int,
     outs: (Option<&mut f64>, Option<&mut f64>, Option<&mut f64>),
-    f: impl FnOnce(&opencrg::Road) -> Option<[f64; 3]>,
+    f: impl FnOnce(&opencrg_core::Road) -> Option<[f64; 3]>,
 ) -> c_int {
     let (Some(a), Some(b), Some(c)) = outs else { return 0 };
     cp_call(func, cp_id, 0, |cp: &mut ContactPoint| match f(cp.road()) {

@@ -1,7 +1,7 @@
 //! The behaviour profile of the C API, chosen by the `OPENCRG_COMPAT` environment
 //! variable and read once, when a road is first loaded.
 
-use opencrg::{Compat, UnknownCompat};
+use opencrg_core::{Compat, UnknownCompat};
 use std::sync::OnceLock;
 
 /// The environment variable that chooses the profile.

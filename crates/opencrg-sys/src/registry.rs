@@ -6,7 +6,7 @@
 
 use crate::lock::lock;
 use crate::slots::Slots;
-use opencrg::{ContactPoint, Road};
+use opencrg_core::{ContactPoint, Road};
 use std::ffi::c_int;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
@@ -178,8 +178,8 @@ mod tests {
     use super::*;
     use crate::owner::OWNER_STREAK;
     use crate::thread_id::thread_id;
-    use opencrg::settings::opt;
-    use opencrg::synth::RoadSpec;
+    use opencrg_core::settings::opt;
+    use opencrg_core::synth::RoadSpec;
 
     fn new_cp() -> c_int {
         let road = RoadSpec::straight(10.0, 2.0, 0.5, 0.5).build().expect("a valid road");

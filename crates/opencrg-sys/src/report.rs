@@ -5,7 +5,7 @@
 //! the reference uses.
 
 use crate::msg::{self, DEBUG, NOTICE, WARN};
-use opencrg::report::{Event, Statistics};
+use opencrg_core::report::{Event, Statistics};
 
 /// Sends one message per event (and per line of the statistics block), in order.
 /// Call it with no contact point or data set held: a callback may call back.
@@ -25,7 +25,7 @@ pub(crate) fn send(func: &str, events: Vec<Event>) {
             Event::ClosedTrack(None) => msg::send(NOTICE, &format!("{func}: the reference line cannot be closed")),
             Event::ModifierDefaulted { id, value } => msg::send(
                 NOTICE,
-                &format!("{func}: {} not given, set to its default {value:.1}", opencrg::settings::name(id)),
+                &format!("{func}: {} not given, set to its default {value:.1}", opencrg_core::settings::name(id)),
             ),
             Event::NansHandled(0) => msg::send(NOTICE, &format!("{func}: no NaN in the elevation grid")),
             Event::NansHandled(n) => msg::send(NOTICE, &format!("{func}: {n} NaN cells at the grid borders handled")),

@@ -46,14 +46,14 @@ fn setting_constants_match_the_settings_table() {
     let header = std::fs::read_to_string(crate_dir.join("../../include/crgBaseLib.h")).unwrap();
     let mut in_header: Vec<(String, String)> = defines(&header, "dCrgCpOption");
     in_header.extend(defines(&header, "dCrgMod"));
-    assert_eq!(in_header.len(), opencrg::settings::SETTINGS.len(), "one constant per setting");
-    for row in opencrg::settings::SETTINGS {
+    assert_eq!(in_header.len(), opencrg_core::settings::SETTINGS.len(), "one constant per setting");
+    for row in opencrg_core::settings::SETTINGS {
         let found = in_header.iter().find(|(name, _)| name == row.c_constant);
         let Some((_, value)) = found else { panic!("{} is not in crgBaseLib.h", row.c_constant) };
         assert_eq!(value, &row.id.to_string(), "{}", row.c_constant);
     }
     let size = defines(&header, "dCrgSizeOptList");
-    assert_eq!(size, [("dCrgSizeOptList".to_string(), (opencrg::settings::TABLE_SIZE - 1).to_string())]);
+    assert_eq!(size, [("dCrgSizeOptList".to_string(), (opencrg_core::settings::TABLE_SIZE - 1).to_string())]);
 }
 
 /// The functions a header declares: a name followed by `(` after a return type, at the

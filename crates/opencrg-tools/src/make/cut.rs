@@ -1,0 +1,82 @@
+//! A part of a road: the cross sections and long sections between two u (and v), at
+//! the grid nodes inside, left where they were.
+
+use opencrg_core::draft::Draft;
+use opencrg_core::units::Metres;
+use opencrg_core::units::Num;
+use opencrg_core::Road;
+use opencrg_core::{Error, Result};
+
+/// The part of `road` between `u.0` and `u.1` (and between `v.0` and `v.1`, when
+/// given): the grid nodes inside those ranges, with the same surface at the same x/y/z.
+/// A range must overlap the road by at least two nodes in each direction.
+pub fn cut(road: &Road, u: (f64, f64), v: Option<(f64, f64)>) -> Result<Road> {
+    let d = Draft::line_of(road);
+    let (u_first, u_last) = road.u_range();
+    let (v_right, v_left) = road.v_range();
+    let (a, b) = nodes_within(u, |i| d.u_first + i as f64 * d.u_inc, d.nu())
+        .ok_or_else(|| outside("u", u, (u_first, u_last)))?;
+    let (c, e) = match v {
+        Some(v) => nodes_within(v, |i| d.v[i], d.nv()).ok_or_else(|| outside("v", v, (v_right, v_left)))?,
+        None => (0, d.nv() - 1),
+    };
+    let what = format!(
+        "cut by opencrg {}: u {} to {} m, v {} to {} m",
+        env!("CARGO_PKG_VERSION"),
+        Metres(d.u_first + a as f64 * d.u_inc),
+        Metres(d.u_first + b as f64 * d.u_inc),
+        Metres(d.v[c]),
+        Metres(d.v[e])
+    );
+    slice(d, road.grid().values(), a..=b, c..=e).into_road(&what)
+}
+
+/// The first and last of `n` nodes (positions `at(i)`, increasing) within `range`, when
+/// at least two are.
+fn nodes_within(range: (f64, f64), at: impl Fn(usize) -> f64, n: usize) -> Option<(usize, usize)> {
+    let (lo, hi) = (range.0.min(range.1), range.0.max(range.1));
+    // Positions computed from a grid carry rounding; a bound on a node takes the node.
+    let slack = |x: f64| 1e-9 * (1.0 + x.abs());
+    let first = (0..n).find(|&i| at(i) >= lo - slack(lo))?;
+    let last = (0..n).rev().find(|&i| at(i) <= hi + slack(hi))?;
+    (last > first).then_some((first, last))
+}
+
+fn outside(axis: &str, asked: (f64, f64), road: (f64, f64)) -> Error {
+    Error::Request(format!(
+        "{axis} range {}:{} holds fewer than two grid nodes of the road ({axis} from {} to {} m)",
+        Num(asked.0),
+        Num(asked.1),
+        road.0,
+        road.1
+    ))
+}
+
+/// The draft's cross sections `us` and long sections `vs` of `grid` (its elevations), the
+/// line starting at the first of them where it was.
+fn slice(d: Draft, grid: &[f32], us: std::ops::RangeInclusive<usize>, vs: std::ops::RangeInclusive<usize>) -> Draft {
+    let (x, y) = d.line_xy();
+    let z = d.line_z();
+    let (a, b) = (*us.start(), *us.end());
+    let nu = d.nu();
+    let mut part = Vec::with_capacity((b - a + 1) * vs.clone().count());
+    for iv in vs.clone() {
+        part.extend_from_slice(&grid[iv * nu + a..=iv * nu + b]);
+    }
+    let moved = a != 0 || b != nu - 1;
+    Draft {
+        u_first: d.u_first + a as f64 * d.u_inc,
+        start: (x[a], y[a]),
+        z_start: z[a],
+        phi: d.phi[us.clone()].to_vec(),
+        slope: d.slope.as_ref().map(|s| s[us.clone()].to_vec()),
+        bank: d.bank.as_ref().map(|s| s[us.clone()].to_vec()),
+        regular: d.regular,
+        // The same banking over the part kept.
+        bank_v: (d.bank_v.0.max(d.v[*vs.start()]), d.bank_v.1.min(d.v[*vs.end()])),
+        v: d.v[vs].to_vec(),
+        z: part,
+        moved: d.moved || moved,
+        ..d
+    }
+}
