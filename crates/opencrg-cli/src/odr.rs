@@ -5,7 +5,7 @@
 
 use clap::Subcommand;
 use opencrg_core::Budget;
-use opencrg_odr::{CrgMode, Map, Surface};
+use opencrg_odr::{Map, Surface};
 use opencrg_tools::map_mesh::{map_mesh, MeshOptions};
 use opencrg_tools::mesh_files::{write_mesh, write_whole, MeshFormat};
 use std::io::Write;
@@ -81,89 +81,13 @@ fn load(path: &Path) -> Result<Map, String> {
     Map::load(path).map_err(|e| e.to_string())
 }
 
-fn mode_name(m: CrgMode) -> &'static str {
-    match m {
-        CrgMode::Attached => "attached",
-        CrgMode::Attached0 => "attached0",
-        CrgMode::Genuine => "genuine",
-        CrgMode::Global => "global",
-    }
-}
-
-/// The map's facts as JSON.
-fn facts(map: &Map) -> serde_json::Value {
-    let length: f64 = map.roads.iter().map(|r| r.length).sum();
-    let records: Vec<serde_json::Value> = map
-        .roads
-        .iter()
-        .flat_map(|r| r.crg.iter().map(move |c| (format!("road {}", r.id), c)))
-        .chain(map.junctions.iter().flat_map(|j| j.crg.iter().map(move |c| (format!("junction {}", j.id), c))))
-        .map(|(place, c)| {
-            serde_json::json!({
-                "on": place, "file": c.file, "mode": mode_name(c.mode),
-                "purpose": format!("{:?}", c.purpose).to_lowercase(),
-                "s_start": c.s_start, "s_end": if c.s_end.is_finite() { serde_json::json!(c.s_end) } else { serde_json::Value::Null },
-                "line": c.line,
-            })
-        })
-        .collect();
-    serde_json::json!({
-        "file": map.path.display().to_string(),
-        "opendrive": format!("{}.{}", map.header.rev_major, map.header.rev_minor),
-        "name": map.header.name,
-        "roads": map.roads.len(),
-        "connecting_roads": map.roads.iter().filter(|r| r.junction.is_some()).count(),
-        "junctions": map.junctions.len(),
-        "length": length,
-        "extent": extent(map).map_or(serde_json::Value::Null, |[x0, y0, x1, y1]| serde_json::json!({"x": [x0, x1], "y": [y0, y1]})),
-        "crg_records": records,
-    })
-}
-
-fn info(map: &Map, json: bool) -> Result<(), String> {
-    let f = facts(map);
+fn info(map: &Map, json: bool) {
+    let info = map.info();
     if json {
-        println!("{}", serde_json::to_string_pretty(&f).map_err(|e| e.to_string())?);
-        return Ok(());
+        println!("{}", info.to_json());
+    } else {
+        print!("{info}");
     }
-    println!(
-        "file           {} (OpenDRIVE {})",
-        f["file"].as_str().unwrap_or(""),
-        f["opendrive"].as_str().unwrap_or("")
-    );
-    println!(
-        "roads          {} ({} connecting roads in junctions), {:.1} m in all",
-        f["roads"],
-        f["connecting_roads"],
-        f["length"].as_f64().unwrap_or(0.0)
-    );
-    println!("junctions      {}", f["junctions"]);
-    if let Some(e) = f["extent"].as_object() {
-        let (x, y) = (&e["x"], &e["y"]);
-        println!(
-            "extent         x {:.2} .. {:.2} m, y {:.2} .. {:.2} m",
-            x[0].as_f64().unwrap_or(f64::NAN),
-            x[1].as_f64().unwrap_or(f64::NAN),
-            y[0].as_f64().unwrap_or(f64::NAN),
-            y[1].as_f64().unwrap_or(f64::NAN)
-        );
-    }
-    let records = f["crg_records"].as_array().cloned().unwrap_or_default();
-    println!("CRG records    {}", records.len());
-    for r in records {
-        let end = r["s_end"].as_f64().map_or("end".to_string(), |e| format!("{e}"));
-        println!(
-            "  {}: {} ({}, {}), s {} to {}, line {}",
-            r["on"].as_str().unwrap_or(""),
-            r["file"].as_str().unwrap_or(""),
-            r["mode"].as_str().unwrap_or(""),
-            r["purpose"].as_str().unwrap_or(""),
-            r["s_start"],
-            end,
-            r["line"]
-        );
-    }
-    Ok(())
 }
 
 fn number(x: f64) -> String {
@@ -189,33 +113,6 @@ fn eval(path: &Path) -> Result<(), String> {
     out.flush().map_err(io)
 }
 
-/// The extent of the map's roads (x0, y0, x1, y1), their lanes included, from their
-/// outermost borders (and the lane offset) every 2 m (at most 10,000 cross sections a road, and about a million
-/// in all, shared by length).
-fn extent(map: &Map) -> Option<[f64; 4]> {
-    let mut e = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
-    let total = map.length();
-    for road in &map.roads {
-        let share = if total > 0.0 { (1e6 * road.length / total).ceil() } else { 1.0 };
-        let n = (road.length / 2.0).ceil().min(share).clamp(1.0, 10_000.0) as usize;
-        for k in 0..=n {
-            let s = road.length * k as f64 / n as f64;
-            let Some((section, ds)) = road.lanes.section_at(s) else { continue };
-            let offset = road.lanes.offset.at(s);
-            let ts = [true, false].into_iter().flat_map(|left| section.spans(left, ds, offset).last().map(|l| l.outer));
-            // The lanes start at the lane offset, which may lie beyond the reference line
-            // on a road with lanes on one side only.
-            for t in ts.chain([0.0, offset]) {
-                let [x, y, _] = road.surface_point(s, t);
-                if x.is_finite() && y.is_finite() {
-                    e = [e[0].min(x), e[1].min(y), e[2].max(x), e[3].max(y)];
-                }
-            }
-        }
-    }
-    e[0].is_finite().then_some(e)
-}
-
 fn render(path: &Path, output: &Path, size: usize, budget: &Budget) -> Result<(), String> {
     if !(16..=crate::render::MAX_SIZE).contains(&size) {
         return Err(format!(
@@ -224,7 +121,7 @@ fn render(path: &Path, output: &Path, size: usize, budget: &Budget) -> Result<()
         ));
     }
     let surface = Arc::new(Surface::load(path).map_err(|e| e.to_string())?);
-    let e = extent(surface.map()).ok_or_else(|| format!("{}: no road to draw", path.display()))?;
+    let e = surface.map().extent().ok_or_else(|| format!("{}: no road to draw", path.display()))?;
     let crate::render::RasterFrame { px, west: x0, north: y1, width: mw, height: mh } =
         crate::render::RasterFrame::around(e, size);
     let request = format!("a map picture of {mw} x {mh} px");
@@ -304,7 +201,7 @@ fn view(path: &Path, output: &Path, options: &MeshOptions, budget: &Budget) -> R
 /// Runs an `odr` command; the exit status.
 pub fn run(command: OdrCommand, budget: &Budget) -> Result<ExitCode, String> {
     match command {
-        OdrCommand::Info { map, json } => info(&load(&map)?, json)?,
+        OdrCommand::Info { map, json } => info(&load(&map)?, json),
         OdrCommand::Check { map } => {
             let m = load(&map)?;
             let findings = opencrg_odr::check(&m);

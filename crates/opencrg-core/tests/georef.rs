@@ -136,7 +136,7 @@ fn wgs84_round_trips_within_a_tenth_of_a_millimetre() {
         }
     }
     let plain = curved("").build().unwrap();
-    assert!(matches!(Earth::of(&plain), Err(Error::Geo(_))));
+    assert!(matches!(Earth::of(&plain), Err(Error::OutOfRange(_))));
 }
 
 /// The error of loading a road whose map section has `extra` in it.

@@ -278,7 +278,7 @@ impl Map {
     /// Reads the map in `path`.
     pub fn load(path: impl AsRef<Path>) -> Result<Map> {
         let path = path.as_ref();
-        let text = std::fs::read(path).map_err(|source| Error::Io { path: path.to_path_buf(), source })?;
+        let text = std::fs::read(path).map_err(|source| Error::reading(path, source))?;
         Map::from_bytes(&text, path)
     }
 

@@ -64,6 +64,10 @@ def test_absurd_requests_raise_request_errors(road_file, what, call, words):
     with pytest.raises(opencrg.RequestError) as e:
         call(road)
     assert isinstance(e.value, ValueError) and isinstance(e.value, opencrg.CrgError)
+    # The kind: beyond the memory limit, or a value the request does not take.
+    beyond = "the limit is" in str(e.value)
+    assert isinstance(e.value, opencrg.TooLargeError if beyond else opencrg.OutOfRangeError), type(e.value)
+    assert isinstance(e.value, MemoryError) == beyond
     for w in words:
         assert w in str(e.value), (w, str(e.value))
     # The interpreter and the road still answer.

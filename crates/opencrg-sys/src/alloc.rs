@@ -1,12 +1,12 @@
 //! The allocator hooks `crgCalloc`, `crgRealloc` and `crgFree`, which applications may
-//! redirect to their own functions.
+//! redirect to their own functions, and their exports.
 
 use std::ffi::c_void;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-pub type CallocFn = unsafe extern "C" fn(usize, usize) -> *mut c_void;
-pub type ReallocFn = unsafe extern "C" fn(*mut c_void, usize) -> *mut c_void;
-pub type FreeFn = unsafe extern "C" fn(*mut c_void);
+pub(crate) type CallocFn = unsafe extern "C" fn(usize, usize) -> *mut c_void;
+pub(crate) type ReallocFn = unsafe extern "C" fn(*mut c_void, usize) -> *mut c_void;
+pub(crate) type FreeFn = unsafe extern "C" fn(*mut c_void);
 
 static CALLOC: AtomicUsize = AtomicUsize::new(0);
 static REALLOC: AtomicUsize = AtomicUsize::new(0);
@@ -16,20 +16,20 @@ fn store(slot: &AtomicUsize, f: Option<usize>) {
     slot.store(f.unwrap_or(0), Ordering::SeqCst);
 }
 
-pub fn set_calloc(f: Option<CallocFn>) {
+pub(crate) fn set_calloc(f: Option<CallocFn>) {
     store(&CALLOC, f.map(|f| f as usize));
 }
 
-pub fn set_realloc(f: Option<ReallocFn>) {
+pub(crate) fn set_realloc(f: Option<ReallocFn>) {
     store(&REALLOC, f.map(|f| f as usize));
 }
 
-pub fn set_free(f: Option<FreeFn>) {
+pub(crate) fn set_free(f: Option<FreeFn>) {
     store(&FREE, f.map(|f| f as usize));
 }
 
 /// Zeroed memory from the hook, or from the C library.
-pub fn calloc(n: usize, size: usize) -> *mut c_void {
+pub(crate) fn calloc(n: usize, size: usize) -> *mut c_void {
     match CALLOC.load(Ordering::SeqCst) {
         // SAFETY: calloc accepts any sizes.
         0 => unsafe { libc::calloc(n, size) },
@@ -43,7 +43,7 @@ pub fn calloc(n: usize, size: usize) -> *mut c_void {
 ///
 /// # Safety
 /// `p` is null or came from [`calloc`] or [`realloc`] and was not freed since.
-pub unsafe fn realloc(p: *mut c_void, size: usize) -> *mut c_void {
+pub(crate) unsafe fn realloc(p: *mut c_void, size: usize) -> *mut c_void {
     match REALLOC.load(Ordering::SeqCst) {
         // SAFETY: `p` is as the contract above says.
         0 => unsafe { libc::realloc(p, size) },
@@ -57,11 +57,57 @@ pub unsafe fn realloc(p: *mut c_void, size: usize) -> *mut c_void {
 ///
 /// # Safety
 /// As for [`realloc`].
-pub unsafe fn free(p: *mut c_void) {
+pub(crate) unsafe fn free(p: *mut c_void) {
     match FREE.load(Ordering::SeqCst) {
         // SAFETY: `p` is as the contract above says.
         0 => unsafe { libc::free(p) },
         // SAFETY: only ever stored from a `FreeFn` (promised to behave as free).
         f => unsafe { std::mem::transmute::<usize, FreeFn>(f)(p) },
     }
+}
+
+/// Allocates zeroed memory through the library's allocator hook.
+#[no_mangle]
+pub extern "C" fn crgCalloc(nmemb: usize, size: usize) -> *mut c_void {
+    calloc(nmemb, size)
+}
+
+/// Reallocates memory through the library's allocator hook.
+///
+/// # Safety
+/// `ptr` is null or came from `crgCalloc` or `crgRealloc` and was not freed since.
+#[no_mangle]
+pub unsafe extern "C" fn crgRealloc(ptr: *mut c_void, size: usize) -> *mut c_void {
+    // SAFETY: the contract above.
+    unsafe { realloc(ptr, size) }
+}
+
+/// Frees memory through the library's allocator hook.
+///
+/// # Safety
+/// `ptr` is null or came from `crgCalloc` or `crgRealloc` and was not freed since.
+#[no_mangle]
+pub unsafe extern "C" fn crgFree(ptr: *mut c_void) {
+    // SAFETY: the contract above.
+    unsafe { free(ptr) }
+}
+
+/// Installs the application's calloc (null restores the C library's).
+#[no_mangle]
+pub extern "C" fn crgCallocSetCallback(func: Option<unsafe extern "C" fn(nmemb: usize, size: usize) -> *mut c_void>) {
+    set_calloc(func);
+}
+
+/// Installs the application's realloc (null restores the C library's).
+#[no_mangle]
+pub extern "C" fn crgReallocSetCallback(
+    func: Option<unsafe extern "C" fn(ptr: *mut c_void, size: usize) -> *mut c_void>,
+) {
+    set_realloc(func);
+}
+
+/// Installs the application's free (null restores the C library's).
+#[no_mangle]
+pub extern "C" fn crgFreeSetCallback(func: Option<unsafe extern "C" fn(ptr: *mut c_void)>) {
+    set_free(func);
 }

@@ -76,8 +76,9 @@ pub fn everywhere() {
     fence(Ordering::SeqCst);
     if !(available() && sys::run()) {
         // The kernel accepted the registration, after which the call cannot fail;
-        // going on without the barrier could corrupt a contact point.
-        crate::msg::fatal("membarrier failed after a successful registration; stopping");
+        // going on without the barrier could corrupt a contact point. Said on stderr, not
+        // through the message callback: a lock is held here.
+        eprintln!("FATAL: opencrg: membarrier failed after a successful registration; stopping");
         std::process::abort();
     }
     fence(Ordering::SeqCst);

@@ -5,20 +5,20 @@
 //! length the caller gives, through the helpers of `ptr`.
 #![allow(non_snake_case)] // the C API's parameter names
 
-use crate::api::{cp_call, road_read};
+use crate::entry::{answer, answer_as, call_name};
 use crate::ptr::{in_array as input, in_str, out, out_array as output};
-use crate::{c_path, constants, msg};
+use crate::{c_path, constants};
 use opencrg_core::{ContactPoint, DataFormat};
 use std::ffi::{c_char, c_int};
 
 /// Runs a batch on a contact point: two inputs, `K` outputs of `n` values each.
 fn batch<const K: usize>(
-    func: &str,
+    name: fn() -> &'static str,
     cp_id: c_int,
     n: c_int,
     inputs: [*const f64; 2],
     outputs: [*mut f64; K],
-    f: impl FnOnce(&mut ContactPoint, [&[f64]; 2], [&mut [f64]; K]) -> usize,
+    f: impl FnOnce(&mut ContactPoint, [&[f64]; 2], [&mut [f64]; K]) -> usize + Send,
 ) -> c_int {
     let Ok(n) = usize::try_from(n) else { return 0 };
     // SAFETY: the C caller gives `n` values behind every pointer (the functions' contract).
@@ -29,7 +29,9 @@ fn batch<const K: usize>(
         return 0;
     }
     let outs = outs.map(Option::unwrap_or_default);
-    cp_call(func, cp_id, 0, |cp| c_int::try_from(f(cp, [a, b], outs)).unwrap_or(c_int::MAX))
+    answer_as(name, 0, |call| {
+        call.on_cp(cp_id, |cp| c_int::try_from(f(cp, [a, b], outs)).unwrap_or(c_int::MAX)).unwrap_or(0)
+    })
 }
 
 /// ======================================================================================
@@ -45,7 +47,7 @@ fn batch<const K: usize>(
 /// `u`, `v` and `z` point to `n` doubles each.
 #[no_mangle]
 pub unsafe extern "C" fn crgEvaluv2zN(cpId: c_int, n: c_int, u: *const f64, v: *const f64, z: *mut f64) -> c_int {
-    batch("crgEvaluv2zN", cpId, n, [u, v], [z], |cp, [u, v], [z]| cp.uv_to_z_many(u, v, z))
+    batch(call_name!(), cpId, n, [u, v], [z], |cp, [u, v], [z]| cp.uv_to_z_many(u, v, z))
 }
 
 /// Elevation of `n` points (`x[i]`, `y[i]`), as `crgEvalxy2z` on each in order.
@@ -54,7 +56,7 @@ pub unsafe extern "C" fn crgEvaluv2zN(cpId: c_int, n: c_int, u: *const f64, v: *
 /// `x`, `y` and `z` point to `n` doubles each.
 #[no_mangle]
 pub unsafe extern "C" fn crgEvalxy2zN(cpId: c_int, n: c_int, x: *const f64, y: *const f64, z: *mut f64) -> c_int {
-    batch("crgEvalxy2zN", cpId, n, [x, y], [z], |cp, [x, y], [z]| cp.xy_to_z_many(x, y, z))
+    batch(call_name!(), cpId, n, [x, y], [z], |cp, [x, y], [z]| cp.xy_to_z_many(x, y, z))
 }
 
 /// x/y of `n` points (`u[i]`, `v[i]`), as `crgEvaluv2xy` on each in order.
@@ -70,7 +72,7 @@ pub unsafe extern "C" fn crgEvaluv2xyN(
     x: *mut f64,
     y: *mut f64,
 ) -> c_int {
-    batch("crgEvaluv2xyN", cpId, n, [u, v], [x, y], |cp, [u, v], [x, y]| cp.uv_to_xy_many(u, v, x, y))
+    batch(call_name!(), cpId, n, [u, v], [x, y], |cp, [u, v], [x, y]| cp.uv_to_xy_many(u, v, x, y))
 }
 
 /// u/v of `n` points (`x[i]`, `y[i]`), as `crgEvalxy2uv` on each in order (the search
@@ -87,7 +89,7 @@ pub unsafe extern "C" fn crgEvalxy2uvN(
     u: *mut f64,
     v: *mut f64,
 ) -> c_int {
-    batch("crgEvalxy2uvN", cpId, n, [x, y], [u, v], |cp, [x, y], [u, v]| cp.xy_to_uv_many(x, y, u, v))
+    batch(call_name!(), cpId, n, [x, y], [u, v], |cp, [x, y], [u, v]| cp.xy_to_uv_many(x, y, u, v))
 }
 
 /// Heading and curvature of `n` points (`u[i]`, `v[i]`), as `crgEvaluv2pk` on each in order.
@@ -103,7 +105,7 @@ pub unsafe extern "C" fn crgEvaluv2pkN(
     phi: *mut f64,
     curv: *mut f64,
 ) -> c_int {
-    batch("crgEvaluv2pkN", cpId, n, [u, v], [phi, curv], |cp, [u, v], [p, c]| cp.uv_to_pk_many(u, v, p, c))
+    batch(call_name!(), cpId, n, [u, v], [phi, curv], |cp, [u, v], [p, c]| cp.uv_to_pk_many(u, v, p, c))
 }
 
 /// Heading and curvature of `n` points (`x[i]`, `y[i]`), as `crgEvalxy2pk` on each in order.
@@ -119,7 +121,7 @@ pub unsafe extern "C" fn crgEvalxy2pkN(
     phi: *mut f64,
     curv: *mut f64,
 ) -> c_int {
-    batch("crgEvalxy2pkN", cpId, n, [x, y], [phi, curv], |cp, [x, y], [p, c]| cp.xy_to_pk_many(x, y, p, c))
+    batch(call_name!(), cpId, n, [x, y], [phi, curv], |cp, [x, y], [p, c]| cp.xy_to_pk_many(x, y, p, c))
 }
 
 /// Writes an elevation and a normal through the pointers that are not NULL; 1, or 0
@@ -154,7 +156,7 @@ pub unsafe extern "C" fn crgEvaluv2zn(
 ) -> c_int {
     // SAFETY: the contract above.
     let outs = unsafe { [out(z), out(nx), out(ny), out(nz)] };
-    cp_call("crgEvaluv2zn", cpId, 0, |cp| put_normal(cp.uv_to_normal(u, v), outs))
+    answer!(0, |call| call.on_cp(cpId, |cp| put_normal(cp.uv_to_normal(u, v), outs)).unwrap_or(0))
 }
 
 /// Elevation and normal at the point (x, y): those of `crgEvaluv2zn` at the (u, v) that
@@ -174,7 +176,7 @@ pub unsafe extern "C" fn crgEvalxy2zn(
 ) -> c_int {
     // SAFETY: the contract above.
     let outs = unsafe { [out(z), out(nx), out(ny), out(nz)] };
-    cp_call("crgEvalxy2zn", cpId, 0, |cp| put_normal(cp.xy_to_normal(x, y), outs))
+    answer!(0, |call| call.on_cp(cpId, |cp| put_normal(cp.xy_to_normal(x, y), outs)).unwrap_or(0))
 }
 
 /// The number of cross sections (u) and long sections (v) of the elevation grid.
@@ -184,7 +186,7 @@ pub unsafe extern "C" fn crgEvalxy2zn(
 /// Non-null pointers point to an int each.
 #[no_mangle]
 pub unsafe extern "C" fn crgDataSetGetGridSize(dataSetId: c_int, nU: *mut c_int, nV: *mut c_int) -> c_int {
-    road_read("crgDataSetGetGridSize", dataSetId, 0, |r| {
+    answer!(0, |call| call.road(dataSetId).map_or(0, |r| {
         let g = r.grid();
         for (p, value) in [(nU, g.nu), (nV, g.nv)] {
             // SAFETY: one int behind a non-null pointer (the contract).
@@ -193,7 +195,7 @@ pub unsafe extern "C" fn crgDataSetGetGridSize(dataSetId: c_int, nU: *mut c_int,
             }
         }
         1
-    })
+    }))
 }
 
 /// The v position of every long section into v[0 .. nV). Returns 1, or 0 when `nV`
@@ -203,7 +205,7 @@ pub unsafe extern "C" fn crgDataSetGetGridSize(dataSetId: c_int, nU: *mut c_int,
 /// `v` points to `nV` doubles.
 #[no_mangle]
 pub unsafe extern "C" fn crgDataSetGetGridV(dataSetId: c_int, v: *mut f64, nV: c_int) -> c_int {
-    road_read("crgDataSetGetGridV", dataSetId, 0, |r| {
+    answer!(0, |call| call.road(dataSetId).map_or(0, |r| {
         let g = r.grid();
         if usize::try_from(nV).ok() != Some(g.nv) {
             return 0;
@@ -212,7 +214,7 @@ pub unsafe extern "C" fn crgDataSetGetGridV(dataSetId: c_int, v: *mut f64, nV: c
         let Some(out) = (unsafe { output(v, g.nv) }) else { return 0 };
         out.copy_from_slice(&g.v);
         1
-    })
+    }))
 }
 
 /// The elevation grid into `z[i * nV + j]` (cross section i, long section j), NaN kept,
@@ -224,7 +226,7 @@ pub unsafe extern "C" fn crgDataSetGetGridV(dataSetId: c_int, v: *mut f64, nV: c
 /// `z` points to `nU * nV` floats.
 #[no_mangle]
 pub unsafe extern "C" fn crgDataSetGetGridZ(dataSetId: c_int, z: *mut f32, nU: c_int, nV: c_int) -> c_int {
-    road_read("crgDataSetGetGridZ", dataSetId, 0, |r| {
+    answer!(0, |call| call.road(dataSetId).map_or(0, |r| {
         let g = r.grid();
         if usize::try_from(nU).ok() != Some(g.nu) || usize::try_from(nV).ok() != Some(g.nv) {
             return 0;
@@ -237,7 +239,7 @@ pub unsafe extern "C" fn crgDataSetGetGridZ(dataSetId: c_int, z: *mut f32, nU: c
             }
         }
         1
-    })
+    }))
 }
 
 /// The reference line at every cross section: u, x, y, heading (the heading channel's
@@ -257,7 +259,7 @@ pub unsafe extern "C" fn crgDataSetGetRefLine(
     z: *mut f64,
     nU: c_int,
 ) -> c_int {
-    road_read("crgDataSetGetRefLine", dataSetId, 0, |r| {
+    answer!(0, |call| call.road(dataSetId).map_or(0, |r| {
         let l = r.reference_line();
         let n = l.n;
         if usize::try_from(nU).ok() != Some(n) {
@@ -279,7 +281,7 @@ pub unsafe extern "C" fn crgDataSetGetRefLine(
             }
         }
         1
-    })
+    }))
 }
 
 /// ======================================================================================
@@ -299,31 +301,29 @@ pub unsafe extern "C" fn crgDataSetGetRefLine(
 pub unsafe extern "C" fn crgDataSetWrite(dataSetId: c_int, filename: *const c_char, format: c_int) -> c_int {
     // SAFETY: the contract above.
     let filename = unsafe { in_str(filename) };
-    let format = match format {
-        constants::dCrgFormatLRFI => DataFormat::Lrfi,
-        constants::dCrgFormatLDFI => DataFormat::Ldfi,
-        constants::dCrgFormatKRBI => DataFormat::Krbi,
-        constants::dCrgFormatKDBI => DataFormat::Kdbi,
-        other => {
-            msg::warn(&format!("crgDataSetWrite: unknown data format {other}"));
+    answer!(0, |call| {
+        let format = match format {
+            constants::dCrgFormatLRFI => DataFormat::Lrfi,
+            constants::dCrgFormatLDFI => DataFormat::Ldfi,
+            constants::dCrgFormatKRBI => DataFormat::Krbi,
+            constants::dCrgFormatKDBI => DataFormat::Kdbi,
+            other => {
+                call.warn(&format!("{}: unknown data format {other}", call.name()));
+                return 0;
+            }
+        };
+        let Some(filename) = filename else {
+            call.warn(&format!("{}: no file name given", call.name()));
             return 0;
+        };
+        let path = c_path::path_of(filename);
+        let Some(road) = call.road(dataSetId) else { return 0 };
+        match opencrg_core::write(&road, &path, format) {
+            Ok(()) => 1,
+            Err(e) => {
+                call.warn(&format!("{}: {e}", call.name()));
+                0
+            }
         }
-    };
-    let Some(filename) = filename else {
-        msg::warn("crgDataSetWrite: no file name given");
-        return 0;
-    };
-    let path = c_path::path_of(filename);
-    let mut failure = None;
-    let done = road_read("crgDataSetWrite", dataSetId, 0, |road| match opencrg_core::write(road, &path, format) {
-        Ok(()) => 1,
-        Err(e) => {
-            failure = Some(e.to_string());
-            0
-        }
-    });
-    if let Some(e) = failure {
-        msg::warn(&format!("crgDataSetWrite: {e}"));
-    }
-    done
+    })
 }

@@ -6,7 +6,7 @@
 //! without a map projection.
 #![allow(non_snake_case)] // the C API's parameter names
 
-use crate::api::{cp_call, road_read, road_write};
+use crate::entry::{answer, answer_as, call_name};
 use crate::ptr::out;
 use opencrg_core::georef::GlobalOrigin;
 use opencrg_core::{ContactPoint, Earth};
@@ -34,18 +34,18 @@ fn with_earth<T>(road: &opencrg_core::Road, f: impl FnOnce(&Earth) -> Option<T>)
 /// Runs `f` on a contact point's road and writes its triple: 1, or 0 when an output is
 /// null, the id unknown or `f` gives nothing.
 fn on_cp_road(
-    func: &str,
+    name: fn() -> &'static str,
     cp_id: c_int,
     outs: (Option<&mut f64>, Option<&mut f64>, Option<&mut f64>),
-    f: impl FnOnce(&opencrg_core::Road) -> Option<[f64; 3]>,
+    f: impl FnOnce(&opencrg_core::Road) -> Option<[f64; 3]> + Send,
 ) -> c_int {
     let (Some(a), Some(b), Some(c)) = outs else { return 0 };
-    cp_call(func, cp_id, 0, |cp: &mut ContactPoint| match f(cp.road()) {
-        Some([x, y, z]) => {
+    answer_as(name, 0, |call| match call.on_cp(cp_id, |cp: &mut ContactPoint| f(cp.road())) {
+        Some(Some([x, y, z])) => {
             (*a, *b, *c) = (x, y, z);
             1
         }
-        None => 0,
+        _ => 0,
     })
 }
 
@@ -74,7 +74,7 @@ pub unsafe extern "C" fn crgEvalxyz2enh(
 ) -> c_int {
     // SAFETY: the contract above.
     let outs = unsafe { (out(e), out(n), out(h)) };
-    on_cp_road("crgEvalxyz2enh", cpId, outs, |road| Some(road.xyz_to_enh(x, y, z)))
+    on_cp_road(call_name!(), cpId, outs, |road| Some(road.xyz_to_enh(x, y, z)))
 }
 
 /// The local point (x, y, z) of a contact point's road at east, north and height.
@@ -93,7 +93,7 @@ pub unsafe extern "C" fn crgEvalenh2xyz(
 ) -> c_int {
     // SAFETY: the contract above.
     let outs = unsafe { (out(x), out(y), out(z)) };
-    on_cp_road("crgEvalenh2xyz", cpId, outs, |road| Some(road.enh_to_xyz(e, n, h)))
+    on_cp_road(call_name!(), cpId, outs, |road| Some(road.enh_to_xyz(e, n, h)))
 }
 
 /// Latitude and longitude (degrees) and height on the global ellipsoid (WGS 84 unless
@@ -113,7 +113,7 @@ pub unsafe extern "C" fn crgEvalxyz2llh(
 ) -> c_int {
     // SAFETY: the contract above.
     let outs = unsafe { (out(lat), out(lon), out(alt)) };
-    on_cp_road("crgEvalxyz2llh", cpId, outs, |road| with_earth(road, |e| e.xyz_to_llh(road, [x, y, z]).ok()))
+    on_cp_road(call_name!(), cpId, outs, |road| with_earth(road, |e| e.xyz_to_llh(road, [x, y, z]).ok()))
 }
 
 /// The local point (x, y, z) at latitude and longitude (degrees) and height on the
@@ -133,9 +133,7 @@ pub unsafe extern "C" fn crgEvalllh2xyz(
 ) -> c_int {
     // SAFETY: the contract above.
     let outs = unsafe { (out(x), out(y), out(z)) };
-    on_cp_road("crgEvalllh2xyz", cpId, outs, |road| {
-        Earth::of(road).and_then(|e| e.llh_to_xyz(road, [lat, lon, alt])).ok()
-    })
+    on_cp_road(call_name!(), cpId, outs, |road| Earth::of(road).and_then(|e| e.llh_to_xyz(road, [lat, lon, alt])).ok())
 }
 
 /// The global origin of a data set: offsets x, y, z (m) and heading phi (rad), as
@@ -153,7 +151,8 @@ pub unsafe extern "C" fn crgDataSetGetGlobalOrigin(
 ) -> c_int {
     // SAFETY: the contract above.
     let (Some(x), Some(y), Some(z), Some(phi)) = (unsafe { (out(x), out(y), out(z), out(phi)) }) else { return 0 };
-    road_read("crgDataSetGetGlobalOrigin", dataSetId, 0, |road| {
+    answer!(0, |call| {
+        let Some(road) = call.road(dataSetId) else { return 0 };
         let o = road.global_origin();
         (*x, *y, *z, *phi) = (o.x, o.y, o.z, o.phi);
         1
@@ -167,8 +166,7 @@ pub extern "C" fn crgDataSetSetGlobalOrigin(dataSetId: c_int, x: f64, y: f64, z:
     if ![x, y, z, phi].iter().all(|v| v.is_finite()) {
         return 0;
     }
-    road_write("crgDataSetSetGlobalOrigin", dataSetId, 0, |road| {
-        road.set_global_origin(GlobalOrigin { x, y, z, phi });
-        1
-    })
+    answer!(0, |call| call
+        .change_road(dataSetId, |road| road.set_global_origin(GlobalOrigin { x, y, z, phi }))
+        .map_or(0, |()| 1))
 }

@@ -1,11 +1,10 @@
 //! Messages: level, warning budget and the application's callback.
 //!
-//! The library's own messages and the application's `crgMsgPrint` calls go the same
-//! way: formatted in the C shim, routed here.
+//! The library's own messages (sent by a [`Call`](crate::entry::Call)) and the
+//! application's `crgMsgPrint` calls go the same way: formatted in the C shim, routed here.
 
 use crate::lock::lock;
-use crate::msg_entry::opencrg_msg_print;
-use std::ffi::{c_char, c_int, CString};
+use std::ffi::{c_char, c_int};
 use std::sync::atomic::{AtomicI32, Ordering};
 use std::sync::Mutex;
 
@@ -47,26 +46,6 @@ pub fn is_printable(level: c_int) -> bool {
 
 pub fn set_callback(cb: Option<Callback>) {
     *lock(&CALLBACK) = cb;
-}
-
-/// Sends one of the library's own messages (a newline is added).
-pub fn send(level: c_int, text: &str) {
-    if level > self::level() {
-        return;
-    }
-    let text = CString::new(format!("{text}\n").replace('\0', " ")).unwrap_or_default();
-    // SAFETY: "%s" with one NUL-terminated string argument.
-    unsafe { opencrg_msg_print(level, c"%s".as_ptr(), text.as_ptr()) }
-}
-
-/// A fatal message.
-pub fn fatal(text: &str) {
-    send(FATAL, text);
-}
-
-/// A warning.
-pub fn warn(text: &str) {
-    send(WARN, text);
 }
 
 /// Whether a message of this level is wanted at all (the shim formats nothing otherwise).

@@ -7,11 +7,11 @@
 //! allocate nothing and make no system call.
 #![allow(non_snake_case)] // the C API's parameter names
 
+use crate::c_path;
+use crate::entry::answer;
 use crate::lock::lock;
-use crate::panic::guard;
 use crate::ptr::{in_str, out};
 use crate::slots::Slots;
-use crate::{c_path, msg};
 use opencrg_odr::{Probe, Surface};
 use std::ffi::{c_char, c_int};
 use std::sync::{Arc, Mutex};
@@ -41,9 +41,9 @@ fn map(id: c_int) -> Option<Arc<Surface>> {
 pub unsafe extern "C" fn crgOdrMapLoad(filename: *const c_char) -> c_int {
     // SAFETY: the contract above.
     let filename = unsafe { in_str(filename) };
-    guard("crgOdrMapLoad", 0, || {
+    answer!(0, |call| {
         let Some(filename) = filename else {
-            msg::fatal("crgOdrMapLoad: no file name given");
+            call.fatal(&format!("{}: no file name given", call.name()));
             return 0;
         };
         match Surface::load(c_path::path_of(filename)) {
@@ -53,7 +53,7 @@ pub unsafe extern "C" fn crgOdrMapLoad(filename: *const c_char) -> c_int {
                 c_int::try_from(maps.len()).unwrap_or(0)
             }
             Err(e) => {
-                msg::fatal(&format!("crgOdrMapLoad: {e}"));
+                call.fatal(&format!("{}: {e}", call.name()));
                 0
             }
         }
@@ -63,7 +63,7 @@ pub unsafe extern "C" fn crgOdrMapLoad(filename: *const c_char) -> c_int {
 /// Releases a map and its probes; 1, or 0 for an unknown id.
 #[no_mangle]
 pub extern "C" fn crgOdrMapRelease(mapId: c_int) -> c_int {
-    guard("crgOdrMapRelease", 0, || {
+    answer!(0, |_| {
         let released = {
             let mut maps = lock(&MAPS);
             let index = usize::try_from(mapId).ok().and_then(|i| i.checked_sub(1));
@@ -80,16 +80,14 @@ pub extern "C" fn crgOdrMapRelease(mapId: c_int) -> c_int {
 /// file's order), or -1 for an unknown id.
 #[no_mangle]
 pub extern "C" fn crgOdrMapGetRoadCount(mapId: c_int) -> c_int {
-    guard("crgOdrMapGetRoadCount", -1, || {
-        map(mapId).map_or(-1, |m| c_int::try_from(m.map().roads.len()).unwrap_or(c_int::MAX))
-    })
+    answer!(-1, |_| { map(mapId).map_or(-1, |m| c_int::try_from(m.map().roads.len()).unwrap_or(c_int::MAX)) })
 }
 
 /// Makes a probe on a map: one per wheel or thread, it keeps where its wheel was; returns
 /// its id (>= 0), or -1 for an unknown map.
 #[no_mangle]
 pub extern "C" fn crgOdrProbeCreate(mapId: c_int) -> c_int {
-    guard("crgOdrProbeCreate", -1, || {
+    answer!(-1, |_| {
         let Some(surface) = map(mapId) else { return -1 };
         PROBES.create(mapId, surface.probe())
     })
@@ -98,7 +96,7 @@ pub extern "C" fn crgOdrProbeCreate(mapId: c_int) -> c_int {
 /// Releases a probe; 1, or 0 for an unknown id.
 #[no_mangle]
 pub extern "C" fn crgOdrProbeRelease(probeId: c_int) -> c_int {
-    guard("crgOdrProbeRelease", 0, || c_int::from(PROBES.delete(probeId).is_some()))
+    answer!(0, |_| c_int::from(PROBES.delete(probeId).is_some()))
 }
 
 /// The ground at the world point (x, y): the surface's height with the CRG records laid
@@ -123,7 +121,7 @@ pub unsafe extern "C" fn crgOdrEvalxy(
 ) -> c_int {
     // SAFETY: the contract above.
     let outs = unsafe { (out(z), out(friction), out(road), out(lane), out(s), out(t)) };
-    guard("crgOdrEvalxy", 0, || {
+    answer!(0, |_| {
         let (Some(z), Some(friction), Some(road), Some(lane), Some(s), Some(t)) = outs else { return 0 };
         let Some(Some(g)) = PROBES.with_mut(probeId, |p| p.ground(x, y)) else { return 0 };
         (*z, *friction, *s, *t) = (g.z, g.friction, g.s, g.t);
@@ -149,7 +147,7 @@ pub unsafe extern "C" fn crgOdrEvalxy2normal(
 ) -> c_int {
     // SAFETY: the contract above.
     let outs = unsafe { (out(nx), out(ny), out(nz)) };
-    guard("crgOdrEvalxy2normal", 0, || {
+    answer!(0, |_| {
         let (Some(nx), Some(ny), Some(nz)) = outs else { return 0 };
         let Some(Some([a, b, c])) = PROBES.with_mut(probeId, |p| p.normal(x, y)) else { return 0 };
         (*nx, *ny, *nz) = (a, b, c);
@@ -175,7 +173,7 @@ pub unsafe extern "C" fn crgOdrEvalst2xyz(
 ) -> c_int {
     // SAFETY: the contract above.
     let outs = unsafe { (out(x), out(y), out(z)) };
-    guard("crgOdrEvalst2xyz", 0, || {
+    answer!(0, |_| {
         let (Some(x), Some(y), Some(z)) = outs else { return 0 };
         let Ok(road) = usize::try_from(road) else { return 0 };
         let Some(Some((px, py, g))) = PROBES.with_mut(probeId, |p| p.ground_st(road, s, t)) else { return 0 };

@@ -8,7 +8,7 @@
 //! way of their own that times the call and adds it to the contact point's count.
 #![allow(non_snake_case)] // the C API's parameter names
 
-use crate::panic::guard;
+use crate::entry::{answer, Call};
 use crate::{msg, registry};
 use std::ffi::c_int;
 
@@ -39,10 +39,10 @@ pub(crate) fn timed(cp_id: c_int, call: impl FnOnce() -> c_int) -> c_int {
 }
 
 /// Changes a contact point's statistics, warning about an unknown id.
-fn change(call: &str, cpId: c_int, f: impl FnOnce(&mut registry::PerfStat)) -> Option<registry::PerfStat> {
+fn change(call: &Call, cpId: c_int, f: impl FnOnce(&mut registry::PerfStat) + Send) -> Option<registry::PerfStat> {
     let found = registry::perf_stat(cpId, f);
     if found.is_none() {
-        msg::warn(&format!("{call}: no contact point with id {cpId}"));
+        call.warn(&format!("{}: no contact point with id {cpId}", call.name()));
     }
     found
 }
@@ -50,30 +50,30 @@ fn change(call: &str, cpId: c_int, f: impl FnOnce(&mut registry::PerfStat)) -> O
 /// Starts counting the evaluation calls on a contact point and their time, from zero.
 #[no_mangle]
 pub extern "C" fn crgContactPointActivatePerfStat(cpId: c_int) {
-    guard("crgContactPointActivatePerfStat", (), || {
+    answer!((), |call| {
         let start = registry::PerfStat { active: true, ..Default::default() };
-        change("crgContactPointActivatePerfStat", cpId, |s| *s = start);
+        change(call, cpId, |s| *s = start);
     })
 }
 
 /// Stops counting the calls on a contact point (what was counted is kept for printing).
 #[no_mangle]
 pub extern "C" fn crgContactPointDeActivatePerfStat(cpId: c_int) {
-    guard("crgContactPointDeActivatePerfStat", (), || {
-        change("crgContactPointDeActivatePerfStat", cpId, |s| s.active = false);
+    answer!((), |call| {
+        change(call, cpId, |s| s.active = false);
     })
 }
 
 /// Prints what was counted on a contact point: calls, their total, mean and longest time.
 #[no_mangle]
 pub extern "C" fn crgContactPointPrintPerfStat(cpId: c_int) {
-    guard("crgContactPointPrintPerfStat", (), || {
-        let Some(s) = change("crgContactPointPrintPerfStat", cpId, |_| {}) else { return };
+    answer!((), |call| {
+        let Some(s) = change(call, cpId, |_| {}) else { return };
         let mean = if s.calls > 0 { s.nanos as f64 / s.calls as f64 } else { 0.0 };
         let state = if s.active { "counting" } else { "not counting" };
-        msg::send(msg::NOTICE, &format!("performance statistics of contact point {cpId} ({state})"));
-        msg::send(msg::NOTICE, &format!("    calls counted:  {}", s.calls));
-        msg::send(msg::NOTICE, &format!("    time in all:    {:.6} s", s.nanos as f64 * 1e-9));
-        msg::send(msg::NOTICE, &format!("    time per call:  {mean:.1} ns (longest {} ns)", s.longest));
+        call.send(msg::NOTICE, &format!("performance statistics of contact point {cpId} ({state})"));
+        call.send(msg::NOTICE, &format!("    calls counted:  {}", s.calls));
+        call.send(msg::NOTICE, &format!("    time in all:    {:.6} s", s.nanos as f64 * 1e-9));
+        call.send(msg::NOTICE, &format!("    time per call:  {mean:.1} ns (longest {} ns)", s.longest));
     })
 }

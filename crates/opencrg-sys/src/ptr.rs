@@ -65,6 +65,18 @@ pub(crate) unsafe fn in_str<'a>(p: *const c_char) -> Option<&'a CStr> {
     Some(unsafe { CStr::from_ptr(p) })
 }
 
+/// Writes the pair `f` gives: 1, or 0 when an output is missing or `f` gives nothing.
+pub(crate) fn put_pair(a: Option<&mut f64>, b: Option<&mut f64>, f: impl FnOnce() -> Option<(f64, f64)>) -> i32 {
+    let (Some(a), Some(b)) = (a, b) else { return 0 };
+    match f() {
+        Some((x, y)) => {
+            (*a, *b) = (x, y);
+            1
+        }
+        None => 0,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -3,6 +3,8 @@
 //! Data sets live in one table behind a lock. Contact points live in a table of slots
 //! ([`Slots`]: each its own lock and its owner's lock-free path), so evaluation on
 //! different contact points from different threads never waits on a shared lock.
+//! Closures run under a lock are `Send`, so that they cannot send a message (see
+//! [`crate::entry`]).
 
 use crate::lock::lock;
 use crate::slots::Slots;
@@ -68,13 +70,13 @@ pub fn add_dataset(road: Road) -> c_int {
 }
 
 /// Runs `f` on a data set; `None` for an unknown id.
-pub fn with_dataset<R>(id: c_int, f: impl FnOnce(&mut DataSet) -> R) -> Option<R> {
+pub fn with_dataset<R>(id: c_int, f: impl FnOnce(&mut DataSet) -> R + Send) -> Option<R> {
     let mut sets = lock(&DATASETS);
     sets.iter_mut().find(|d| d.id == id).map(f)
 }
 
 /// Changes a data set's road; contact points of that data set follow the change.
-pub fn modify_road<R>(id: c_int, f: impl FnOnce(&mut Road) -> R) -> Option<R> {
+pub fn modify_road<R>(id: c_int, f: impl FnOnce(&mut Road) -> R + Send) -> Option<R> {
     let (result, road) = with_dataset(id, |d| {
         let r = f(Arc::make_mut(&mut d.road));
         (r, d.road.clone())
@@ -115,13 +117,13 @@ pub fn create_cp(dataset: c_int) -> c_int {
 
 /// Runs `f` on a contact point; `None` for an unknown id.
 #[inline]
-pub fn with_cp<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R) -> Option<R> {
+pub fn with_cp<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R + Send) -> Option<R> {
     CPS.with_mut(id, |e| f(&mut e.cp))
 }
 
 /// Changes the performance statistics of a contact point (`f` on them) and gives them;
 /// `None` for an unknown id.
-pub fn perf_stat(id: c_int, f: impl FnOnce(&mut PerfStat)) -> Option<PerfStat> {
+pub fn perf_stat(id: c_int, f: impl FnOnce(&mut PerfStat) + Send) -> Option<PerfStat> {
     CPS.with_mut(id, |e| {
         let was_active = e.stats.active;
         f(&mut e.stats);
@@ -149,7 +151,7 @@ pub fn count_call(id: c_int, nanos: u64) {
 /// `f`) otherwise: the first try of the hottest entry points, with no lock and no
 /// call. `f` must not panic (this runs outside any panic guard).
 #[inline(always)]
-pub fn with_owned_cp_mut<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R) -> Option<R> {
+pub fn with_owned_cp_mut<R>(id: c_int, f: impl FnOnce(&mut ContactPoint) -> R + Send) -> Option<R> {
     CPS.with_owned_mut(id, |e| f(&mut e.cp))
 }
 
@@ -159,7 +161,7 @@ pub fn delete_cp(id: c_int) -> bool {
 }
 
 /// Runs `f` on every contact point of a data set (`None`: of every data set).
-fn for_each_cp_of(dataset: Option<c_int>, mut f: impl FnMut(&mut ContactPoint)) {
+fn for_each_cp_of(dataset: Option<c_int>, mut f: impl FnMut(&mut ContactPoint) + Send) {
     CPS.for_each_of(dataset, |e| f(&mut e.cp));
 }
 
@@ -168,9 +170,11 @@ pub fn delete_cps_of(dataset: Option<c_int>) {
     CPS.delete_of(dataset, forget_stats);
 }
 
-/// Applies `f` to every contact point.
-pub fn update_all_cps(f: impl FnMut(&mut ContactPoint)) {
-    for_each_cp_of(None, f);
+/// Applies `f` to every contact point; what it gives for each, in the order of their ids.
+pub fn update_all_cps<R: Send>(mut f: impl FnMut(&mut ContactPoint) -> R + Send) -> Vec<R> {
+    let mut out = Vec::new();
+    for_each_cp_of(None, |cp| out.push(f(cp)));
+    out
 }
 
 #[cfg(test)]

@@ -4,32 +4,35 @@
 //! inconsistent or incomplete: WARNING; the relocation: DEBUG) in words, at the levels
 //! the reference uses.
 
+use crate::entry::Call;
 use crate::msg::{self, DEBUG, NOTICE, WARN};
 use opencrg_core::report::{Event, Statistics};
 
-/// Sends one message per event (and per line of the statistics block), in order.
-/// Call it with no contact point or data set held: a callback may call back.
-pub(crate) fn send(func: &str, events: Vec<Event>) {
+/// Sends one message per event (and per line of the statistics block), in order, each
+/// naming the export `call` answers.
+pub(crate) fn send(call: &Call, events: Vec<Event>) {
+    let func = call.name();
+    let send = |level, text: &str| call.send(level, text);
     for event in events {
         match event {
             Event::FileImported(path) => {
-                msg::send(NOTICE, &format!("{func}: read the file referenced as <{}>", path.display()))
+                send(NOTICE, &format!("{func}: read the file referenced as <{}>", path.display()))
             }
-            Event::LineFromHeading => msg::send(NOTICE, &format!("{func}: reference line x/y integrated from the heading channel")),
-            Event::LineZFromSlope => msg::send(NOTICE, &format!("{func}: reference line z integrated from the slope")),
-            Event::Line(finding) => msg::send(WARN, &format!("{func}: {finding}")),
-            Event::Prepared(s) => statistics(func, &s),
+            Event::LineFromHeading => send(NOTICE, &format!("{func}: reference line x/y integrated from the heading channel")),
+            Event::LineZFromSlope => send(NOTICE, &format!("{func}: reference line z integrated from the slope")),
+            Event::Line(finding) => send(WARN, &format!("{func}: {finding}")),
+            Event::Prepared(s) => statistics(call, &s),
             Event::ClosedTrack(Some((a, b))) => {
-                msg::send(NOTICE, &format!("{func}: the reference line can be closed, over u = {a:.3} .. {b:.3}"))
+                send(NOTICE, &format!("{func}: the reference line can be closed, over u = {a:.3} .. {b:.3}"))
             }
-            Event::ClosedTrack(None) => msg::send(NOTICE, &format!("{func}: the reference line cannot be closed")),
-            Event::ModifierDefaulted { id, value } => msg::send(
+            Event::ClosedTrack(None) => send(NOTICE, &format!("{func}: the reference line cannot be closed")),
+            Event::ModifierDefaulted { id, value } => send(
                 NOTICE,
                 &format!("{func}: {} not given, set to its default {value:.1}", opencrg_core::settings::name(id)),
             ),
-            Event::NansHandled(0) => msg::send(NOTICE, &format!("{func}: no NaN in the elevation grid")),
-            Event::NansHandled(n) => msg::send(NOTICE, &format!("{func}: {n} NaN cells at the grid borders handled")),
-            Event::Relocated { center, angle, shift } => msg::send(
+            Event::NansHandled(0) => send(NOTICE, &format!("{func}: no NaN in the elevation grid")),
+            Event::NansHandled(n) => send(NOTICE, &format!("{func}: {n} NaN cells at the grid borders handled")),
+            Event::Relocated { center, angle, shift } => send(
                 DEBUG,
                 &format!(
                     "{func}: road moved: rotated by {angle:.6} rad around ({:.3}, {:.3}), shifted by ({:.3}, {:.3}, {:.3})",
@@ -41,10 +44,11 @@ pub(crate) fn send(func: &str, events: Vec<Event>) {
 }
 
 /// The statistics block: the reference's figures in its order, one line a message.
-fn statistics(func: &str, s: &Statistics) {
+fn statistics(call: &Call, s: &Statistics) {
     if NOTICE > msg::level() {
         return;
     }
+    let func = call.name();
     let mut lines = vec![
         String::new(),
         format!("{func}: road statistics"),
@@ -80,6 +84,6 @@ fn statistics(func: &str, s: &Statistics) {
     lines.push(format!("{func}: end of road statistics"));
     lines.push(String::new());
     for line in lines {
-        msg::send(NOTICE, &line);
+        call.send(NOTICE, &line);
     }
 }

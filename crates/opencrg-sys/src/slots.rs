@@ -2,7 +2,8 @@
 //! OpenDRIVE probes): each in a slot of fixed address with its own lock and its owner's
 //! lock-free path ([`OwnedCell`]), so that calls on different objects from different
 //! threads never wait on a shared lock, and a thread's calls on its own object take no
-//! lock at all.
+//! lock at all. Closures run on an object are `Send`, so that they cannot send a message
+//! (see [`crate::entry`]).
 
 use crate::lock::lock;
 use crate::owner::OwnedCell;
@@ -98,7 +99,7 @@ impl<T: Send> Slots<T> {
 
     /// Runs `f` on an object; `None` for an unknown id.
     #[inline]
-    pub(crate) fn with_mut<R>(&self, id: c_int, f: impl FnOnce(&mut T) -> R) -> Option<R> {
+    pub(crate) fn with_mut<R>(&self, id: c_int, f: impl FnOnce(&mut T) -> R + Send) -> Option<R> {
         self.slot_of(id)?.cell.with_mut(|v| v.as_mut().map(f))
     }
 
@@ -106,7 +107,7 @@ impl<T: Send> Slots<T> {
     /// otherwise: the first try of the hottest entry points, with no lock and no call.
     /// `f` must not panic where this runs outside a panic guard.
     #[inline(always)]
-    pub(crate) fn with_owned_mut<R>(&self, id: c_int, f: impl FnOnce(&mut T) -> R) -> Option<R> {
+    pub(crate) fn with_owned_mut<R>(&self, id: c_int, f: impl FnOnce(&mut T) -> R + Send) -> Option<R> {
         self.slot_of(id)?.cell.with_owned_mut(|v| v.as_mut().map(f)).flatten()
     }
 
@@ -121,7 +122,7 @@ impl<T: Send> Slots<T> {
     }
 
     /// Runs `f` on every object made from `parent` (`None`: on every object).
-    pub(crate) fn for_each_of(&self, parent: Option<c_int>, mut f: impl FnMut(&mut T)) {
+    pub(crate) fn for_each_of(&self, parent: Option<c_int>, mut f: impl FnMut(&mut T) + Send) {
         let ids = lock(&self.ids);
         for i in 0..ids.size {
             let Some(s) = self.slot(i) else { continue };
@@ -136,7 +137,7 @@ impl<T: Send> Slots<T> {
 
     /// Deletes the objects made from `parent`, or all of them (and empties the table),
     /// showing each to `deleted` first.
-    pub(crate) fn delete_of(&self, parent: Option<c_int>, mut deleted: impl FnMut(&T)) {
+    pub(crate) fn delete_of(&self, parent: Option<c_int>, mut deleted: impl FnMut(&T) + Send) {
         let mut ids = lock(&self.ids);
         for i in 0..ids.size {
             let Some(s) = self.slot(i) else { continue };

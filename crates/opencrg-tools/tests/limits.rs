@@ -24,8 +24,10 @@ fn line() -> Points {
 /// A refusal of the kind a request gets, its text holding every piece of `parts`.
 fn refused<T>(result: opencrg_core::Result<T>, parts: &[&str]) {
     match result {
-        Err(e @ (Error::Request(_) | Error::Analysis(_))) => {
+        Err(e @ (Error::TooLarge(_) | Error::OutOfRange(_))) => {
             let text = e.to_string();
+            // The kind says which: beyond the memory limit, or a value not taken.
+            assert_eq!(matches!(e, Error::TooLarge(_)), text.contains("the limit is"), "{text}");
             for p in parts {
                 assert!(text.contains(p), "'{p}' not in: {text}");
             }
@@ -138,7 +140,7 @@ fn lines_through_points_beyond_the_finite_are_refused() {
     ] {
         let result = tools::generate(&Points { x, y, z: None }, layout, None, &Budget::with_bytes(8 << 20));
         if let Err(e) = result {
-            assert!(matches!(e, Error::Request(_)), "{e}");
+            assert!(matches!(e, Error::OutOfRange(_)), "{e}");
         }
     }
 }

@@ -1,7 +1,7 @@
 //! How much one request may make. Every tool that allocates by its parameters (the
 //! nodes of a road being made, the vertices of a mesh, the pixels of a picture, the
 //! window a filter reads per node) sizes what it would make here first, in floating
-//! point so that no count can overflow, and is refused with [`Error::Request`] naming
+//! point so that no count can overflow, and is refused with [`Error::TooLarge`] naming
 //! the request, the size it would need and the limit, before anything is allocated.
 //! What passes is allocated fallibly ([`filled`]), so that memory the system still
 //! refuses becomes an error too, never an abort.
@@ -78,7 +78,7 @@ impl Budget {
     pub fn admit(&self, request: &dyn fmt::Display, count: f64, unit: &str, bytes_each: f64) -> Result<usize> {
         let bytes = count * bytes_each;
         if !(count >= 0.0) || !count.is_finite() || bytes > self.bytes as f64 || count > usize::MAX as f64 {
-            return Err(Error::Request(format!(
+            return Err(Error::TooLarge(format!(
                 "{request} would make {} {unit} ({}); {}",
                 Count(count),
                 Bytes(bytes),
@@ -102,7 +102,7 @@ impl Budget {
         let bytes = nodes * ROAD_NODE_BYTES + cross_sections * (ROAD_SECTION_BYTES + extra);
         let fits = cross_sections.is_finite() && long_sections.is_finite() && bytes <= self.bytes as f64;
         if !fits {
-            return Err(Error::Request(format!(
+            return Err(Error::TooLarge(format!(
                 "{request} would make a road of {} cross sections x {} long sections ({} nodes, {}); {}",
                 Count(cross_sections),
                 Count(long_sections),
@@ -147,7 +147,7 @@ pub fn filled<T: Clone>(n: usize, value: T, what: &str) -> Result<Vec<T>> {
 
 /// The refusal of `n` values of `T` for `what` the system did not give memory for.
 pub fn refused_of<T>(n: usize, what: &str) -> Error {
-    Error::Request(format!(
+    Error::TooLarge(format!(
         "{what}: the system refused the memory for {} values ({})",
         Count(n as f64),
         Bytes(n as f64 * std::mem::size_of::<T>() as f64)

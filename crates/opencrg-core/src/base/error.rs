@@ -1,5 +1,6 @@
 //! The one error type of the crate.
 
+use std::borrow::Cow;
 use std::path::PathBuf;
 
 /// Where in a file something went wrong.
@@ -29,19 +30,28 @@ impl std::fmt::Display for Location {
     }
 }
 
-/// Everything that can go wrong in this crate.
-#[derive(Debug, thiserror::Error)]
+/// Everything that can go wrong, by the kind a caller acts on: a file missing, unreadable
+/// or unwritable; a file whose content is wrong; a road refused by a check; a request too
+/// large for the memory it may take; a value the request does not take.
+#[derive(Debug)]
 pub enum Error {
-    /// A file could not be opened or read.
-    #[error("{path}: cannot read: {source}")]
-    Io {
+    /// A file that does not exist.
+    NotFound {
         /// The file.
         path: PathBuf,
         /// The system's reason.
         source: std::io::Error,
     },
+    /// A file that could not be read or written.
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// Whether it was being written (else read).
+        writing: bool,
+        /// The system's reason.
+        source: std::io::Error,
+    },
     /// A file was read but its content is wrong.
-    #[error("{path}{location}: {field}: {message}")]
     Format {
         /// The file.
         path: PathBuf,
@@ -53,33 +63,69 @@ pub enum Error {
         message: String,
     },
     /// A road was refused by a check.
-    #[error("check failed: {0}")]
     Check(String),
-    /// A setting was refused.
-    #[error(transparent)]
-    Setting(#[from] crate::base::settings::SettingError),
-    /// An evaluation was refused (outside the data with border mode none, or a NaN input).
-    #[error("evaluation refused: {0}")]
-    Eval(&'static str),
-    /// An analysis was refused (a track outside the road, a profile too short for it).
-    #[error("{0}")]
-    Analysis(String),
-    /// A position on the earth could not be computed (a road without a map projection,
-    /// a point the projection cannot take).
-    #[error("{0}")]
-    Geo(String),
-    /// A tool refused what it was asked (a range outside the road, points that do not
-    /// cover it, roads that cannot be joined).
-    #[error("{0}")]
-    Request(String),
-    /// A file could not be written.
-    #[error("{path}: cannot write: {source}")]
-    Write {
-        /// The file.
-        path: PathBuf,
-        /// The system's reason.
-        source: std::io::Error,
-    },
+    /// A request that would take more memory than it may (the limit of a
+    /// [`Budget`](crate::Budget)), or than the system gives.
+    TooLarge(String),
+    /// A value the request does not take: a parameter out of range (an increment, a
+    /// width, a range outside the road), a setting refused, a point the evaluation refuses
+    /// (outside the road with border mode none, NaN), a road or map without what the
+    /// request needs (a projection, a channel, points that cover it).
+    OutOfRange(Cow<'static, str>),
+}
+
+impl Error {
+    /// The error of reading `path`: [`Error::NotFound`] for a file that does not exist,
+    /// [`Error::Io`] otherwise.
+    pub fn reading(path: &std::path::Path, source: std::io::Error) -> Self {
+        if source.kind() == std::io::ErrorKind::NotFound {
+            Error::NotFound { path: path.to_path_buf(), source }
+        } else {
+            Error::Io { path: path.to_path_buf(), writing: false, source }
+        }
+    }
+
+    /// The error of writing `path`.
+    pub fn writing(path: &std::path::Path, source: std::io::Error) -> Self {
+        Error::Io { path: path.to_path_buf(), writing: true, source }
+    }
+
+    /// A value the request does not take, saying why.
+    pub fn out_of_range(why: impl Into<Cow<'static, str>>) -> Self {
+        Error::OutOfRange(why.into())
+    }
+}
+
+impl std::fmt::Display for Error {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Error::NotFound { path, source } => write!(f, "{}: cannot read: {source}", path.display()),
+            Error::Io { path, writing, source } => {
+                write!(f, "{}: cannot {}: {source}", path.display(), if *writing { "write" } else { "read" })
+            }
+            Error::Format { path, location, field, message } => {
+                write!(f, "{}{location}: {field}: {message}", path.display())
+            }
+            Error::Check(why) => write!(f, "check failed: {why}"),
+            Error::TooLarge(why) => f.write_str(why),
+            Error::OutOfRange(why) => f.write_str(why),
+        }
+    }
+}
+
+impl std::error::Error for Error {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Error::NotFound { source, .. } | Error::Io { source, .. } => Some(source),
+            _ => None,
+        }
+    }
+}
+
+impl From<crate::base::settings::SettingError> for Error {
+    fn from(e: crate::base::settings::SettingError) -> Self {
+        Error::OutOfRange(e.to_string().into())
+    }
 }
 
 /// Shorthand for results of this crate.

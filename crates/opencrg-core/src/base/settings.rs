@@ -298,10 +298,9 @@ pub enum Value {
 }
 
 /// Why a setting was refused.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum SettingError {
     /// The identifier is not one of this table's family.
-    #[error("{id} is not a known {family} identifier")]
     UnknownId {
         /// The identifier given.
         id: u32,
@@ -309,7 +308,6 @@ pub enum SettingError {
         family: &'static str,
     },
     /// The value has the wrong type for the identifier.
-    #[error("setting <{name}> takes {expected} values")]
     WrongType {
         /// The setting's name.
         name: &'static str,
@@ -317,7 +315,6 @@ pub enum SettingError {
         expected: &'static str,
     },
     /// The value is outside what the setting accepts.
-    #[error("value {value} for <{name}> is refused: {why}")]
     Refused {
         /// The setting's name.
         name: &'static str,
@@ -327,6 +324,18 @@ pub enum SettingError {
         why: &'static str,
     },
 }
+
+impl std::fmt::Display for SettingError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            SettingError::UnknownId { id, family } => write!(f, "{id} is not a known {family} identifier"),
+            SettingError::WrongType { name, expected } => write!(f, "setting <{name}> takes {expected} values"),
+            SettingError::Refused { name, value, why } => write!(f, "value {value} for <{name}> is refused: {why}"),
+        }
+    }
+}
+
+impl std::error::Error for SettingError {}
 
 /// A table of settings of one family, indexed by identifier.
 #[derive(Debug, Clone, PartialEq)]

@@ -36,7 +36,7 @@ impl std::fmt::Debug for Earth {
 }
 
 fn geo_error(what: impl std::fmt::Display) -> Error {
-    Error::Geo(what.to_string())
+    Error::out_of_range(what.to_string())
 }
 
 fn proj(definition: &str) -> Result<Proj> {

@@ -51,14 +51,16 @@ fn elevation(z: Option<f64>) -> Result<f64> {
     // A match, not `ok_or`: building (and dropping) an unused error costs in this hot path.
     match z {
         Some(z) => Ok(z),
-        None => Err(Error::Eval("outside the road with border mode none")),
+        None => Err(Error::OutOfRange(std::borrow::Cow::Borrowed(
+            "evaluation refused: outside the road with border mode none",
+        ))),
     }
 }
 
 #[inline]
 fn finite(a: f64, b: f64) -> Result<()> {
     if a.is_nan() || b.is_nan() {
-        Err(Error::Eval("NaN input"))
+        Err(Error::OutOfRange(std::borrow::Cow::Borrowed("evaluation refused: NaN input")))
     } else {
         Ok(())
     }
@@ -170,7 +172,7 @@ impl ContactPoint {
         if self.history.resize(size) {
             Ok(())
         } else {
-            Err(crate::base::error::Error::Request(format!(
+            Err(crate::base::error::Error::out_of_range(format!(
                 "a search history of {size} entries: the system refused the memory; the history is unchanged"
             )))
         }
@@ -316,7 +318,9 @@ impl ContactPoint {
         finite(u, v)?;
         match crate::query::normal::uv_normal(&self.road, &self.eval, u, v) {
             Some(answer) => Ok(answer),
-            None => Err(Error::Eval("outside the road with border mode none")),
+            None => Err(Error::OutOfRange(std::borrow::Cow::Borrowed(
+                "evaluation refused: outside the road with border mode none",
+            ))),
         }
     }
 

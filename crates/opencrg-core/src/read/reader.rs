@@ -112,7 +112,7 @@ impl Loader {
 }
 
 fn open(path: &Path) -> Result<FileBytes> {
-    let io = |source| Error::Io { path: path.to_path_buf(), source };
+    let io = |source| Error::reading(path, source);
     let directory = || Error::format(path, Location::File, "file", "is a directory, not a CRG file");
     // (Windows refuses to open a directory as a file: the reason is told all the same.)
     let file = std::fs::File::open(path).map_err(|e| if path.is_dir() { directory() } else { io(e) })?;

@@ -19,7 +19,7 @@ use std::path::Path;
 /// `path` under a temporary name, then renamed; a failure leaves `path` as it was).
 pub fn write(road: &Road, path: impl AsRef<Path>, format: DataFormat) -> Result<()> {
     let path = path.as_ref();
-    let err = |source| Error::Write { path: path.to_path_buf(), source };
+    let err = |source| Error::writing(path, source);
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
     let temporary = path.with_file_name(format!(".{name}.{}.partial", std::process::id()));
     let written = (|| {

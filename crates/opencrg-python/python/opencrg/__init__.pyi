@@ -47,6 +47,12 @@ class CheckError(CrgError):
 class RequestError(CrgError, ValueError):
     """A request refused before any work: a parameter out of range, a size beyond the memory limit, a setting or option the library does not take."""
 
+class TooLargeError(RequestError, MemoryError):
+    """A request that would take more memory than it may (max_memory=, or half of what the system has)."""
+
+class OutOfRangeError(RequestError):
+    """A value the request does not take: a parameter out of range, a setting or option refused, a road without what the request needs."""
+
 _Memory = Union[int, str]
 
 class ReferenceLine(NamedTuple):

@@ -174,7 +174,7 @@ pub fn base_samples(dx: f64) -> usize {
 pub fn segment_iris(runs: &[(f64, &Response)], length: f64, segment: f64) -> Result<Vec<Option<f64>>> {
     let dx = runs.iter().map(|(_, r)| r.dx).fold(0.0, f64::max);
     if !(segment > 0.0 && segment.is_finite()) || segment < dx {
-        return Err(Error::Analysis(format!(
+        return Err(Error::out_of_range(format!(
             "segment length {} m; it must be a positive number of at least the sample interval ({dx} m)",
             Num(segment)
         )));
@@ -195,20 +195,20 @@ pub fn segment_iris(runs: &[(f64, &Response)], length: f64, segment: f64) -> Res
 /// Refused: a profile too short for the initial 11 m and one step, a `dx` not positive.
 pub fn response(profile: &[f64], dx: f64) -> Result<Response> {
     if !(dx > 0.0 && dx.is_finite()) {
-        return Err(Error::Analysis(format!("IRI: sample interval {dx} m; it must be positive")));
+        return Err(Error::out_of_range(format!("IRI: sample interval {dx} m; it must be positive")));
     }
     let base = base_samples(dx);
     let start = (INITIAL_LENGTH / dx).round() as usize;
     let needed = start.max(base) + 1;
     if profile.len() < needed {
-        return Err(Error::Analysis(format!(
+        return Err(Error::out_of_range(format!(
             "IRI: a profile of {:.3} m ({} samples {dx} m apart) is too short: the initial states need {INITIAL_LENGTH} m ({needed} samples)",
             profile.len().saturating_sub(1) as f64 * dx,
             profile.len()
         )));
     }
     if let Some(i) = profile.iter().position(|z| !z.is_finite()) {
-        return Err(Error::Analysis(format!("IRI: sample {i} of the profile is not a number")));
+        return Err(Error::out_of_range(format!("IRI: sample {i} of the profile is not a number")));
     }
     let car = QuarterCar::golden(dx);
     let initial = (profile[start] - profile[0]) / (start as f64 * dx);

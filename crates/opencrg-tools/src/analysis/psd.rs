@@ -99,16 +99,16 @@ fn welch(profile: &[f64], dx: f64, n: usize) -> (Vec<(f64, f64)>, usize) {
 /// fit. Refused: fewer than 32 samples, or no third-octave band inside the range.
 pub fn spectrum(profile: &[f64], dx: f64) -> Result<Spectrum> {
     if !(dx > 0.0 && dx.is_finite()) {
-        return Err(Error::Analysis(format!("PSD: sample interval {dx} m; it must be positive")));
+        return Err(Error::out_of_range(format!("PSD: sample interval {dx} m; it must be positive")));
     }
     if profile.len() < 32 {
-        return Err(Error::Analysis(format!(
+        return Err(Error::out_of_range(format!(
             "PSD: a profile of {} samples is too short (at least 32 are needed)",
             profile.len()
         )));
     }
     if let Some(i) = profile.iter().position(|z| !z.is_finite()) {
-        return Err(Error::Analysis(format!("PSD: sample {i} of the profile is not a number")));
+        return Err(Error::out_of_range(format!("PSD: sample {i} of the profile is not a number")));
     }
     let n = segment_samples(profile.len(), dx);
     let (density, segments) = welch(profile, dx, n);
@@ -130,7 +130,7 @@ pub fn spectrum(profile: &[f64], dx: f64) -> Result<Spectrum> {
     let usable: Vec<(f64, f64)> =
         bands.iter().filter(|(_, g)| *g > 0.0).map(|&(f, g)| ((f / N0).log10(), g.log10())).collect();
     if usable.len() < 2 {
-        return Err(Error::Analysis(format!(
+        return Err(Error::out_of_range(format!(
             "PSD: between {low:.4} and {high:.4} cycles/m the profile ({} samples, {dx} m apart) leaves fewer than two third-octave bands to fit",
             profile.len()
         )));

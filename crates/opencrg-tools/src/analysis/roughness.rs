@@ -52,7 +52,7 @@ pub fn profile(road: &Arc<Road>, v: f64) -> Result<Vec<f64>> {
     let (u_first, u_last) = road.u_range();
     let (v_right, v_left) = road.v_range();
     if !(v >= v_right && v <= v_left) {
-        return Err(Error::Analysis(format!(
+        return Err(Error::out_of_range(format!(
             "track at v = {} m lies outside the road, whose long sections span v = {v_right} to {v_left} m",
             Num(v)
         )));
@@ -90,7 +90,7 @@ pub fn roughness(road: &Arc<Road>, tracks: &[f64], segment: f64) -> Result<Vec<T
     let (u_first, u_last) = road.u_range();
     let du = road.increments().0;
     if !(segment > 0.0 && segment.is_finite()) || segment < du {
-        return Err(Error::Analysis(format!(
+        return Err(Error::out_of_range(format!(
             "segment length {} m; it must be a positive number of at least the road's u increment ({du} m)",
             Num(segment)
         )));
@@ -103,7 +103,7 @@ pub fn roughness(road: &Arc<Road>, tracks: &[f64], segment: f64) -> Result<Vec<T
             let skipped = du * (z.len() - runs.iter().map(|r| r.len()).sum::<usize>()) as f64;
             let longest = runs.iter().max_by_key(|r| r.len()).cloned().unwrap_or(0..0);
             let too_short = |what: &str, e: Error| {
-                Error::Analysis(format!(
+                Error::out_of_range(format!(
                     "track at v = {v} m: {what}; the longest run with elevations is {:.2} m of {:.2} m ({e})",
                     du * longest.len().saturating_sub(1) as f64,
                     u_last - u_first
@@ -113,7 +113,7 @@ pub fn roughness(road: &Arc<Road>, tracks: &[f64], segment: f64) -> Result<Vec<T
             let driven: Vec<(usize, iri::Response)> =
                 runs.iter().filter_map(|r| iri::response(&z[r.clone()], du).ok().map(|resp| (r.start, resp))).collect();
             if driven.is_empty() {
-                let e = iri::response(&z[longest.clone()], du).err().unwrap_or(Error::Analysis("no data".into()));
+                let e = iri::response(&z[longest.clone()], du).err().unwrap_or(Error::out_of_range("no data"));
                 return Err(too_short("no run of elevations long enough for the IRI", e));
             }
             let steps: usize = driven.iter().map(|(_, r)| r.rectified.len()).sum();

@@ -98,7 +98,7 @@ struct Builder<'a> {
 pub fn map_mesh(surface: &Arc<Surface>, options: &MeshOptions, budget: &Budget) -> Result<Mesh> {
     if let Some(e) = options.max_error {
         if !(e > 0.0 && e.is_finite()) {
-            return Err(Error::Request(format!("the largest error must be a positive number of metres, not {e}")));
+            return Err(Error::out_of_range(format!("the largest error must be a positive number of metres, not {e}")));
         }
     }
     let map = surface.map();
@@ -106,7 +106,7 @@ pub fn map_mesh(surface: &Arc<Surface>, options: &MeshOptions, budget: &Budget) 
         None => (0..map.roads.len()).collect(),
         Some(ids) => ids
             .iter()
-            .map(|id| map.road_index(id).ok_or_else(|| Error::Request(format!("no road '{id}' in the map"))))
+            .map(|id| map.road_index(id).ok_or_else(|| Error::out_of_range(format!("no road '{id}' in the map"))))
             .collect::<Result<_>>()?,
     };
     let mut b = Builder {
@@ -448,7 +448,9 @@ impl Builder<'_> {
         let count: usize = columns.iter().map(|c| c.len() * rows.len()).sum();
         let total = self.mesh.positions.len() + count;
         if total > u32::MAX as usize {
-            return Err(Error::Request(format!("a mesh of {total} vertices is more than 32-bit indices can hold")));
+            return Err(Error::out_of_range(format!(
+                "a mesh of {total} vertices is more than 32-bit indices can hold"
+            )));
         }
         self.budget.admit(&"the map's mesh", total as f64, "vertices", VERTEX_BYTES)?;
         let (a, b) = (rows[0], rows[rows.len() - 1]);

@@ -82,7 +82,7 @@ fn nodes_within(nodes: &[f64], range: Option<(f64, f64)>, what: &str) -> Result<
     let end = nodes.partition_point(|&x| x <= a.max(b));
     if end < first + 2 {
         let (lo, hi) = (nodes.first().copied().unwrap_or(0.0), nodes.last().copied().unwrap_or(0.0));
-        return Err(Error::Analysis(format!(
+        return Err(Error::out_of_range(format!(
             "{what} {a}:{b} holds fewer than two grid nodes of the road (which spans {what} {lo} to {hi})"
         )));
     }
@@ -129,7 +129,7 @@ pub fn grid_mesh_every(
     let (us, vs) = (&us[..], &vs[..]);
     let count = us.len() * vs.len();
     if count > u32::MAX as usize {
-        return Err(Error::Analysis(format!("a mesh of {count} vertices is more than 32-bit indices can hold")));
+        return Err(Error::out_of_range(format!("a mesh of {count} vertices is more than 32-bit indices can hold")));
     }
     let request = format!("a mesh of {} x {} grid nodes", us.len(), vs.len());
     budget.admit(&request, count as f64, "vertices", VERTEX_BYTES)?;

@@ -56,7 +56,7 @@ pub fn write_whole(path: &Path, write: impl FnOnce(&mut BufWriter<File>) -> io::
     if written.is_err() {
         let _ = std::fs::remove_file(&tmp);
     }
-    written.map_err(|source| Error::Write { path: path.to_path_buf(), source })
+    written.map_err(|source| Error::writing(path, source))
 }
 
 /// Writes `mesh` in `format` to any writer.

@@ -213,7 +213,9 @@ fn lattice_over(cp: &ContactPoint, us: &[f64], vs: &[f64]) -> Result<Lattice> {
     let tiles = (us.len() - 1).div_ceil(size);
     let (nu, nv) = lattice_size(us.len(), vs.len());
     if nu.checked_mul(nv).is_none_or(|n| n > u32::MAX as usize) {
-        return Err(Error::Analysis(format!("a lattice of {nu} x {nv} points is more than 32-bit indices can hold")));
+        return Err(Error::out_of_range(format!(
+            "a lattice of {nu} x {nv} points is more than 32-bit indices can hold"
+        )));
     }
     let (u0, v0) = (us[0], vs[0]);
     let h_u = (us[us.len() - 1] - u0) / (tiles * size) as f64;
@@ -261,7 +263,9 @@ pub fn simplified_mesh(
     progress: &mut dyn FnMut(Stage),
 ) -> Result<Mesh> {
     if !(max_error > 0.0 && max_error.is_finite()) {
-        return Err(Error::Analysis(format!("the largest error must be a positive number of metres, not {max_error}")));
+        return Err(Error::out_of_range(format!(
+            "the largest error must be a positive number of metres, not {max_error}"
+        )));
     }
     progress(Stage::Sampling);
     let (us, vs) = grid_nodes(cp, u, v)?;

@@ -25,7 +25,7 @@ pub fn append(first: &Road, second: &Arc<Road>, budget: &Budget) -> Result<Road>
         if right > a.v[a.nv() - 1] || left < a.v[0] {
             let overlap = right.max(a.v[0]) < left.min(a.v[a.nv() - 1]);
             if !overlap {
-                return Err(Error::Request(format!(
+                return Err(Error::out_of_range(format!(
                     "the second road's long sections (v {right} to {left} m) do not overlap the first's (v {} to {} m)",
                     a.v[0],
                     a.v[a.nv() - 1]

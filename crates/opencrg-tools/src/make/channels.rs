@@ -44,7 +44,7 @@ pub fn change_channel(road: &Road, channel: LineChannel, action: ChannelAction) 
         LineChannel::Banking => d.bank.is_some(),
     };
     if action != ChannelAction::Extract && !has {
-        return Err(Error::Request(format!("the road has no {name} to {}", verb(action))));
+        return Err(Error::out_of_range(format!("the road has no {name} to {}", verb(action))));
     }
     match (channel, action) {
         (LineChannel::Slope, ChannelAction::Apply) => {
@@ -71,7 +71,7 @@ pub fn change_channel(road: &Road, channel: LineChannel, action: ChannelAction) 
             }
             let fits: Vec<(f64, f64)> = (0..nu).map(|iu| fit_across(&d.z, nu, &d.v, iu)).collect();
             if fits.iter().all(|f| f.0.is_nan()) {
-                return Err(Error::Request(format!("the grid holds no values to extract a {name} from")));
+                return Err(Error::out_of_range(format!("the grid holds no values to extract a {name} from")));
             }
             let fits = fill_gaps(fits);
             let mut line = d.line_z();

@@ -43,7 +43,7 @@ fn nodes_within(range: (f64, f64), at: impl Fn(usize) -> f64, n: usize) -> Optio
 }
 
 fn outside(axis: &str, asked: (f64, f64), road: (f64, f64)) -> Error {
-    Error::Request(format!(
+    Error::out_of_range(format!(
         "{axis} range {}:{} holds fewer than two grid nodes of the road ({axis} from {} to {} m)",
         Num(asked.0),
         Num(asked.1),

@@ -46,10 +46,10 @@ pub fn filter(road: &Road, filter: Filter, budget: &Budget) -> Result<Road> {
     match filter {
         Filter::Gauss(sigma) => {
             if !(sigma > 0.0 && sigma.is_finite()) {
-                return Err(Error::Request(format!("Gaussian sigma {} m must be a positive number", Num(sigma))));
+                return Err(Error::out_of_range(format!("Gaussian sigma {} m must be a positive number", Num(sigma))));
             }
             if 3.0 * sigma > length.max(width) {
-                return Err(Error::Request(format!(
+                return Err(Error::out_of_range(format!(
                     "a Gaussian of sigma {} m reaches {} m each way, beyond the road ({length} m long, {width} m wide)",
                     Num(sigma),
                     Num(3.0 * sigma)
@@ -58,10 +58,10 @@ pub fn filter(road: &Road, filter: Filter, budget: &Budget) -> Result<Road> {
         }
         Filter::Median(n) => {
             if n == 0 || n.is_multiple_of(2) {
-                return Err(Error::Request(format!("median window {n} must be an odd number of nodes")));
+                return Err(Error::out_of_range(format!("median window {n} must be an odd number of nodes")));
             }
             if n / 2 >= nu.max(nv) {
-                return Err(Error::Request(format!(
+                return Err(Error::out_of_range(format!(
                     "a median of {n} x {n} nodes is wider than the road ({nu} x {nv} nodes) both ways"
                 )));
             }
@@ -74,7 +74,7 @@ pub fn filter(road: &Road, filter: Filter, budget: &Budget) -> Result<Road> {
         Filter::Median(n) => d.z = median(&d.z, nu, nv, n / 2)?,
         Filter::Limit(lo, hi) => {
             if !(lo <= hi) {
-                return Err(Error::Request(format!(
+                return Err(Error::out_of_range(format!(
                     "limits {}:{} must be two numbers, the lower first",
                     Num(lo),
                     Num(hi)
@@ -86,7 +86,7 @@ pub fn filter(road: &Road, filter: Filter, budget: &Budget) -> Result<Road> {
         }
         Filter::FillNan => {
             if d.z.iter().all(|z| z.is_nan()) {
-                return Err(Error::Request("the grid holds no value to fill NaN from".into()));
+                return Err(Error::out_of_range("the grid holds no value to fill NaN from"));
             }
             fill_nan(&mut d.z, nu, &d.v);
         }

@@ -93,7 +93,7 @@ pub(crate) fn along(line: &Points, layout: Layout, budget: &Budget) -> Result<Dr
 pub(crate) fn along_with(line: &Points, layout: Layout, spacing: f64, budget: &Budget) -> Result<Draft> {
     let Layout { width, u_inc, v_inc } = layout;
     if line.len() < 2 || line.y.len() != line.len() || line.z.as_ref().is_some_and(|z| z.len() != line.len()) {
-        return Err(Error::Request(format!(
+        return Err(Error::out_of_range(format!(
             "a reference line needs at least two points, with x and y each ({} given)",
             line.len()
         )));
@@ -101,7 +101,7 @@ pub(crate) fn along_with(line: &Points, layout: Layout, spacing: f64, budget: &B
     if let Some(i) =
         (0..line.len()).find(|&i| !(line.x[i].abs() <= MAX_COORDINATE && line.y[i].abs() <= MAX_COORDINATE))
     {
-        return Err(Error::Request(format!(
+        return Err(Error::out_of_range(format!(
             "reference line point {} (x {}, y {}) is not within {} m of the origin",
             i + 1,
             Num(line.x[i]),
@@ -110,11 +110,11 @@ pub(crate) fn along_with(line: &Points, layout: Layout, spacing: f64, budget: &B
         )));
     }
     if !(width > 0.0 && width.is_finite()) {
-        return Err(Error::Request(format!("width {} m must be a positive number", Num(width))));
+        return Err(Error::out_of_range(format!("width {} m must be a positive number", Num(width))));
     }
     let nv = position_count(-width / 2.0, width / 2.0, v_inc, "v increment")?;
     let curve = Curve::through(&line.x, &line.y, line.z.as_deref())
-        .map_err(|i| Error::Request(format!("reference line points {i} and {} coincide", i + 1)))?;
+        .map_err(|i| Error::out_of_range(format!("reference line points {i} and {} coincide", i + 1)))?;
     let nu = cross_sections(curve.length, u_inc)?;
     let request = format!(
         "a road {} m wide with a u increment of {} m and a v increment of {} m",
@@ -127,7 +127,7 @@ pub(crate) fn along_with(line: &Points, layout: Layout, spacing: f64, budget: &B
     let (px, py, pt) = curve.polyline(spacing)?;
     let stops = chord_walk(&px, &py, &pt, u_inc)?;
     if stops.len() < 2 {
-        return Err(Error::Request(format!(
+        return Err(Error::out_of_range(format!(
             "the line through the points is {:.3} m long, shorter than one u increment ({u_inc} m)",
             curve.length
         )));

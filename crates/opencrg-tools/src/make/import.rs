@@ -59,9 +59,9 @@ const TRIANGULATED_POINT_BYTES: f64 = 240.0;
 /// refuses it, a triangulation or grid beyond `budget`, points covering less than half
 /// the grid.
 pub fn import(cloud: &Points, how: &Import, progress: Progress, budget: &Budget) -> Result<Road> {
-    let z = cloud.z.as_ref().ok_or_else(|| Error::Request("the points have no z".into()))?;
+    let z = cloud.z.as_ref().ok_or_else(|| Error::out_of_range("the points have no z"))?;
     if cloud.y.len() != cloud.len() || z.len() != cloud.len() {
-        return Err(Error::Request(format!(
+        return Err(Error::out_of_range(format!(
             "the points have {} x, {} y and {} z values: one of each per point",
             cloud.len(),
             cloud.y.len(),
@@ -76,14 +76,14 @@ pub fn import(cloud: &Points, how: &Import, progress: Progress, budget: &Budget)
         }
         None => cloud,
     };
-    let z = cloud.z.as_ref().ok_or_else(|| Error::Request("the points have no z".into()))?;
+    let z = cloud.z.as_ref().ok_or_else(|| Error::out_of_range("the points have no z"))?;
     if cloud.len() < 3 {
-        return Err(Error::Request(format!("{} point(s): a surface needs at least three", cloud.len())));
+        return Err(Error::out_of_range(format!("{} point(s): a surface needs at least three", cloud.len())));
     }
     // What the points' spread says, for a refusal: stray points far from the rest make a
     // road the size of the distance between them.
     let hint = |e: Error| match (e, stray_points(cloud)) {
-        (Error::Request(m), Some(stray)) => Error::Request(format!("{m}; {stray}")),
+        (Error::TooLarge(m), Some(stray)) => Error::TooLarge(format!("{m}; {stray}")),
         (e, _) => e,
     };
     let request = format!("triangulating {} points", cloud.len());
@@ -112,7 +112,7 @@ pub fn import(cloud: &Points, how: &Import, progress: Progress, budget: &Budget)
         *v = CloudPoint { p: Point2::new(cloud.x[i], cloud.y[i]), z: z[i] };
     }
     let tri: DelaunayTriangulation<CloudPoint> = DelaunayTriangulation::bulk_load(vertices)
-        .map_err(|e| Error::Request(format!("the points cannot be triangulated: {e}")))?;
+        .map_err(|e| Error::out_of_range(format!("the points cannot be triangulated: {e}")))?;
     progress("triangulating", cloud.len() as u64, cloud.len() as u64);
     let max_edge = how.max_edge.unwrap_or((5.0 * how.u_inc.max(how.v_inc)).max(0.5));
     let frame = Arc::new(d.frame(d.v[0], d.v[d.nv() - 1])?);
@@ -132,7 +132,7 @@ pub fn import(cloud: &Points, how: &Import, progress: Progress, budget: &Budget)
     let covered = d.z.iter().filter(|z| !z.is_nan()).count();
     let share = covered as f64 / d.z.len() as f64;
     if share < 0.5 {
-        return Err(Error::Request(format!(
+        return Err(Error::out_of_range(format!(
             "the points cover {:.0} % of the road's {} nodes (triangles with edges up to {max_edge} m): \
              the reference line or the width reaches beyond the cloud",
             100.0 * share,
@@ -233,7 +233,7 @@ fn fitted_line(cloud: &Points) -> Result<Points> {
         line.y.push(y / count as f64);
     }
     if line.len() < 2 {
-        return Err(Error::Request("the points do not spread along a line to fit a road to".into()));
+        return Err(Error::out_of_range("the points do not spread along a line to fit a road to"));
     }
     Ok(line)
 }
@@ -267,7 +267,7 @@ fn reach(cloud: &Points, line: &Points, v_inc: f64, budget: &Budget) -> Result<f
     let half = q(right).min(q(left));
     let width = 2.0 * (half / v_inc).floor() * v_inc;
     if !(width >= 2.0 * v_inc) {
-        return Err(Error::Request("the points lie on one side of the line: give the width".into()));
+        return Err(Error::out_of_range("the points lie on one side of the line: give the width"));
     }
     Ok(width)
 }
@@ -275,7 +275,7 @@ fn reach(cloud: &Points, line: &Points, v_inc: f64, budget: &Budget) -> Result<f
 /// Sizes the road `along` would make against `budget`, without making it.
 fn along_admitted(line: &Points, layout: Layout, budget: &Budget) -> Result<()> {
     let curve = Curve::through(&line.x, &line.y, None)
-        .map_err(|i| Error::Request(format!("reference line points {i} and {} coincide", i + 1)))?;
+        .map_err(|i| Error::out_of_range(format!("reference line points {i} and {} coincide", i + 1)))?;
     let nu = cross_sections(curve.length, layout.u_inc)?;
     let nv = position_count(-layout.width / 2.0, layout.width / 2.0, layout.v_inc, "v increment")?;
     let request = format!("a road {} m long with a u increment of {} m", Num(curve.length), Num(layout.u_inc));
@@ -286,7 +286,7 @@ fn along_admitted(line: &Points, layout: Layout, budget: &Budget) -> Result<()> 
 /// of finite numbers, or holds fewer than three points.
 fn crop(cloud: &Points, z: &[f64], [(x0, x1), (y0, y1)]: [(f64, f64); 2]) -> Result<Points> {
     if ![x0, x1, y0, y1].iter().all(|c| c.is_finite()) || x0 >= x1 || y0 >= y1 {
-        return Err(Error::Request(format!(
+        return Err(Error::out_of_range(format!(
             "crop x {}:{}, y {}:{}: two ranges of finite numbers, each from the smaller to the larger",
             Num(x0),
             Num(x1),
@@ -304,7 +304,7 @@ fn crop(cloud: &Points, z: &[f64], [(x0, x1), (y0, y1)]: [(f64, f64); 2]) -> Res
     }
     let kept = Points { x: xs, y: ys, z: Some(zs) };
     if kept.len() < 3 {
-        return Err(Error::Request(format!(
+        return Err(Error::out_of_range(format!(
             "{} of the {} points lie within x {}:{}, y {}:{}: a surface needs at least three",
             kept.len(),
             cloud.len(),

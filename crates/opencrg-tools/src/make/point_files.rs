@@ -13,7 +13,7 @@ pub fn read_points(path: &Path) -> Result<Points> {
         let size = std::fs::metadata(path).map_or(0, |m| m.len());
         return read_las(reader, path, size);
     }
-    let bytes = std::fs::read(path).map_err(|source| Error::Io { path: path.to_path_buf(), source })?;
+    let bytes = std::fs::read(path).map_err(|source| Error::reading(path, source))?;
     parse_points(&bytes, path)
 }
 

@@ -42,7 +42,7 @@ pub fn resample(road: &Arc<Road>, u_inc: Option<f64>, v_inc: Option<f64>, budget
 /// How many cross sections `du` apart a line `length` long holds (as a float: any count).
 pub(crate) fn cross_sections(length: f64, du: f64) -> Result<f64> {
     if !(du > 0.0 && du.is_finite()) {
-        return Err(Error::Request(format!("u increment {} m must be a positive number", Num(du))));
+        return Err(Error::out_of_range(format!("u increment {} m must be a positive number", Num(du))));
     }
     Ok((length / du + 1e-9).floor() + 1.0)
 }
@@ -52,11 +52,11 @@ pub(crate) fn cross_sections(length: f64, du: f64) -> Result<f64> {
 /// fewer than two positions.
 pub(crate) fn position_count(first: f64, last: f64, inc: f64, what: &str) -> Result<f64> {
     if !(inc > 0.0 && inc.is_finite()) {
-        return Err(Error::Request(format!("{what} {} m must be a positive number", Num(inc))));
+        return Err(Error::out_of_range(format!("{what} {} m must be a positive number", Num(inc))));
     }
     let n = ((last - first) / inc + 1e-9).floor() + 1.0;
     if !(n >= 2.0) {
-        return Err(Error::Request(format!(
+        return Err(Error::out_of_range(format!(
             "a {what} of {} m leaves fewer than two nodes in {first} to {last} m",
             Num(inc)
         )));
@@ -92,10 +92,10 @@ pub(crate) fn onto(
     // the length along the old line, is u): finer cross sections bend gently between
     // the old ones instead of turning each old corner in one step.
     let curve = Curve::through(&line.x, &line.y, None)
-        .map_err(|i| Error::Request(format!("the reference line's points {} and {i} coincide", i - 1)))?;
+        .map_err(|i| Error::out_of_range(format!("the reference line's points {} and {i} coincide", i - 1)))?;
     let stops = arc_walk(line.u_first, du, count, |u| curve.at(u - line.u_first))?;
     if stops.len() < 2 {
-        return Err(Error::Request(format!(
+        return Err(Error::out_of_range(format!(
             "a u increment of {du} m leaves fewer than two cross sections on a road {} m long",
             line.u_last - line.u_first
         )));
