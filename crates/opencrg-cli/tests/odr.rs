@@ -29,7 +29,8 @@ fn shared(rel: &str) -> String {
 }
 
 #[test]
-fn info_counts_the_map() {
+#[ignore = "needs ../shared beside the checkout; test.sh runs it: cargo test -- --ignored shared_"]
+fn shared_maps_info_counts_the_map() {
     let out = opencrg(&["odr", "info", &shared("carla/Town01.xodr"), "--json"], "");
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
@@ -37,6 +38,21 @@ fn info_counts_the_map() {
     assert!(j["length"].as_f64().unwrap() > 3000.0);
     let out = opencrg(&["odr", "info", "/nonexistent.xodr"], "");
     assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn info_counts_the_demo_map_and_render_draws_it() {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/data/demo_map.xodr");
+    let text = std::fs::read_to_string(&file).unwrap();
+    let out = opencrg(&["odr", "info", file.to_str().unwrap(), "--json"], "");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let count = |tag: &str| text.matches(tag).count() as u64;
+    assert_eq!((j["roads"].as_u64(), j["junctions"].as_u64()), (Some(count("<road ")), Some(count("<junction "))));
+    assert_eq!(j["crg_records"].as_array().map(Vec::len), Some(text.matches("<CRG ").count()));
+    let png = dir("render_demo").join("map.png");
+    let out = opencrg(&["odr", "render", file.to_str().unwrap(), png.to_str().unwrap(), "--size", "200"], "");
+    assert!(out.status.success() && png.exists(), "{}", String::from_utf8_lossy(&out.stderr));
 }
 
 /// A straight road 60 m along x from the origin with one lane each side (4 m, friction
@@ -134,7 +150,8 @@ fn eval_answers_with_the_crg_records_laid_on() {
 }
 
 #[test]
-fn render_draws_the_map() {
+#[ignore = "needs ../shared beside the checkout; test.sh runs it: cargo test -- --ignored shared_"]
+fn shared_maps_render_draws_the_map() {
     let d = dir("render");
     let out = d.join("town.png");
     let status =
@@ -156,7 +173,8 @@ fn render_draws_the_map() {
 }
 
 #[test]
-fn export_writes_the_lanes_as_parts_of_one_mesh() {
+#[ignore = "needs ../shared beside the checkout; test.sh runs it: cargo test -- --ignored shared_"]
+fn shared_maps_export_writes_the_lanes_as_parts_of_one_mesh() {
     let d = dir("export");
     let glb = d.join("map.glb");
     let map = shared("esmini/fabriksgatan.xodr");

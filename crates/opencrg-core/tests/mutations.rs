@@ -56,7 +56,7 @@ fn seeds() -> Vec<Vec<u8>> {
             .with_heading(|u| -0.3 * u)
             .with_elevation(|u, v| if (u * 10.0) as i64 % 7 == 3 && v > 0.5 { f64::NAN } else { 0.1 * v }),
     ];
-    let mut files = shared_samples();
+    let mut files = Vec::new();
     for spec in &roads {
         let road = spec.build().expect("a seed road builds");
         for format in [DataFormat::Lrfi, DataFormat::Ldfi, DataFormat::Krbi, DataFormat::Kdbi] {
@@ -68,14 +68,10 @@ fn seeds() -> Vec<Vec<u8>> {
     files
 }
 
-/// The ASAM sample roads in text form beside the project (`../shared/conformance/crg-txt`),
-/// when that directory exists; says so when it does not.
+/// The ASAM sample roads in text form beside the project (`../shared/conformance/crg-txt`).
 fn shared_samples() -> Vec<Vec<u8>> {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/conformance/crg-txt");
-    let Ok(entries) = std::fs::read_dir(&dir) else {
-        eprintln!("{} not found: mutating the project's own roads only", dir.display());
-        return Vec::new();
-    };
+    let entries = std::fs::read_dir(&dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display()));
     let mut paths: Vec<_> =
         entries.flatten().map(|e| e.path()).filter(|p| p.extension().is_some_and(|e| e == "crg")).collect();
     paths.sort();
@@ -242,9 +238,20 @@ fn exercise(bytes: Vec<u8>, rng_seed: u64) -> bool {
 
 #[test]
 fn mutated_files_never_panic_or_hang() {
-    let count: usize = std::env::var("OPENCRG_MUTANTS").ok().and_then(|s| s.parse().ok()).unwrap_or(1200);
+    mutants_never_panic_or_hang(&seeds(), 1200);
+}
+
+#[test]
+#[ignore = "needs ../shared beside the checkout; test.sh runs it: cargo test -- --ignored shared_"]
+fn shared_samples_mutated_never_panic_or_hang() {
+    mutants_never_panic_or_hang(&shared_samples(), 600);
+}
+
+/// Mutants of `seeds` (`OPENCRG_MUTANTS` of them, else `default_count`), each refused or
+/// loaded, checked, modified and evaluated, none panicking or taking 20 s.
+fn mutants_never_panic_or_hang(seeds: &[Vec<u8>], default_count: usize) {
+    let count: usize = std::env::var("OPENCRG_MUTANTS").ok().and_then(|s| s.parse().ok()).unwrap_or(default_count);
     let first: u64 = std::env::var("OPENCRG_MUTATION_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(1);
-    let seeds = seeds();
     std::panic::set_hook(Box::new(|_| {}));
     let mut loaded = 0;
     for k in 0..count as u64 {

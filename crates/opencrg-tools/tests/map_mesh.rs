@@ -15,8 +15,11 @@ fn shared(rel: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/opendrive").join(rel)
 }
 
+/// A fresh folder (tests running at once each get their own).
 fn dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("opencrg-odr-mesh-{}-{name}", std::process::id()));
+    static MADE: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let k = MADE.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let d = std::env::temp_dir().join(format!("opencrg-map-mesh-{}-{k}-{name}", std::process::id()));
     std::fs::create_dir_all(&d).unwrap();
     d
 }
@@ -225,7 +228,8 @@ fn the_bound_holds_between_the_vertices() {
 }
 
 #[test]
-fn neighbouring_lanes_and_roads_meet_without_gaps() {
+#[ignore = "needs ../shared beside the checkout; test.sh runs it: cargo test -- --ignored shared_"]
+fn shared_maps_neighbouring_lanes_and_roads_meet_without_gaps() {
     // Every edge of the mesh's border on every shared map: a point 2 mm beyond its middle
     // lies on another triangle, off every lane the mesh holds (the edge of the drivable
     // area), or within the bound of a lane's border (a gap no wider than the bound).

@@ -130,7 +130,8 @@ pub fn map_mesh(surface: &Arc<Surface>, options: &MeshOptions, budget: &Budget) 
             }
             let lanes = chosen_lanes(section, options);
             if !lanes.is_empty() {
-                b.section(i, road, k, section, &lanes, (start, end), options.max_error)?;
+                let piece = Piece { index: i, road, section, lanes: &lanes };
+                b.section(piece, k, (start, end), options.max_error)?;
             }
         }
     }
@@ -183,22 +184,12 @@ fn breaks(surface: &Surface, index: usize, road: &Road, section: &LaneSection, (
 }
 
 impl Builder<'_> {
-    /// Meshes the lanes of one lane section over `range`.
-    #[allow(clippy::too_many_arguments)]
-    fn section(
-        &mut self,
-        index: usize,
-        road: &Road,
-        k: usize,
-        section: &LaneSection,
-        lanes: &[LaneRef],
-        range: (f64, f64),
-        max_error: Option<f64>,
-    ) -> Result<()> {
+    /// Meshes the lanes of `piece`, the `k`th lane section of its road, over `range`.
+    fn section(&mut self, piece: Piece, k: usize, range: (f64, f64), max_error: Option<f64>) -> Result<()> {
+        let Piece { index, road, section, lanes } = piece;
         let first = self.mesh.triangles.len();
         let mut groups: Vec<Vec<[u32; 3]>> = vec![Vec::new(); lanes.len()];
         let cuts = breaks(self.surface, index, road, section, range);
-        let piece = Piece { index, road, section, lanes };
         for cut in cuts.windows(2) {
             let (a, b) = (cut[0], cut[1]);
             let detail = self.surface.elevation_detail(index, 0.5 * (a + b));
@@ -336,93 +327,9 @@ impl Builder<'_> {
         let Some(bound) = max_error else {
             return Ok(self.emit(piece, &columns, grid));
         };
-        let mut keep_rows = vec![false; rows.len()];
-        keep_rows[0] = true;
-        keep_rows[rows.len() - 1] = true;
-        let mut keep_cols: Vec<Vec<bool>> = columns
-            .iter()
-            .map(|c| {
-                let mut k = vec![false; c.len()];
-                k[0] = true;
-                k[c.len() - 1] = true;
-                k
-            })
-            .collect();
-        loop {
-            let kept_rows: Vec<usize> = (0..rows.len()).filter(|&j| keep_rows[j]).collect();
-            let mut changed = false;
-            for (l, g) in grid.iter().enumerate() {
-                let nc = columns[l].len();
-                let kept_cols: Vec<usize> = (0..nc).filter(|&m| keep_cols[l][m]).collect();
-                for r in kept_rows.windows(2) {
-                    for c in kept_cols.windows(2) {
-                        let (r0, r1, c0, c1) = (r[0], r[1], c[0], c[1]);
-                        if r1 - r0 < 2 && c1 - c0 < 2 {
-                            continue;
-                        }
-                        let at = |j: usize, m: usize| g[j * nc + m].p;
-                        let (p00, p10, p11, p01) = (at(r0, c0), at(r1, c0), at(r1, c1), at(r0, c1));
-                        let far = (r0..=r1).any(|j| {
-                            (c0..=c1).any(|m| {
-                                let (x, y) = ((j - r0) as f64 / (r1 - r0) as f64, (m - c0) as f64 / (c1 - c0) as f64);
-                                // The two triangles split the quad along (r0, c0)-(r1, c1).
-                                let on = if x >= y {
-                                    add3(p00, add3(scale(sub(p10, p00), x - y), scale(sub(p11, p00), y)))
-                                } else {
-                                    add3(p00, add3(scale(sub(p01, p00), y - x), scale(sub(p11, p00), x)))
-                                };
-                                !(distance(on, at(j, m)) <= bound) && at(j, m)[2].is_finite()
-                            })
-                        });
-                        if far {
-                            // Which way the surface bends: samples off the straight line
-                            // between the quad's sides along s (at its first, middle and
-                            // last column) call for a row; across (at its rows), for a column.
-                            let off_along = |m: usize| {
-                                (r0..=r1).map(move |j| {
-                                    let w = (j - r0) as f64 / (r1 - r0) as f64;
-                                    distance(at(j, m), lerp(at(r0, m), at(r1, m), w))
-                                })
-                            };
-                            let off_across = |j: usize| {
-                                (c0..=c1).map(move |m| {
-                                    let w = (m - c0) as f64 / (c1 - c0).max(1) as f64;
-                                    distance(at(j, m), lerp(at(j, c0), at(j, c1), w))
-                                })
-                            };
-                            let worst =
-                                |it: &mut dyn Iterator<Item = f64>| it.filter(|e| e.is_finite()).fold(0.0, f64::max);
-                            let along =
-                                [c0, (c0 + c1) / 2, c1].iter().map(|&m| worst(&mut off_along(m))).fold(0.0, f64::max);
-                            let across =
-                                [r0, (r0 + r1) / 2, r1].iter().map(|&j| worst(&mut off_across(j))).fold(0.0, f64::max);
-                            let (mut row, mut col) = (along > 0.5 * bound, across > 0.5 * bound);
-                            if !row && !col {
-                                (row, col) = (true, true);
-                            }
-                            // A way that cannot be halved any more passes to the other.
-                            if row && r1 - r0 < 2 {
-                                col = true;
-                            }
-                            if col && c1 - c0 < 2 {
-                                row = true;
-                            }
-                            if row && r1 - r0 >= 2 && !keep_rows[(r0 + r1) / 2] {
-                                keep_rows[(r0 + r1) / 2] = true;
-                                changed = true;
-                            }
-                            if col && c1 - c0 >= 2 && !keep_cols[l][(c0 + c1) / 2] {
-                                keep_cols[l][(c0 + c1) / 2] = true;
-                                changed = true;
-                            }
-                        }
-                    }
-                }
-            }
-            if !changed {
-                break;
-            }
-        }
+        let points: Vec<Vec<[f64; 3]>> = grid.iter().map(|g| g.iter().map(|v| v.p).collect()).collect();
+        let n_cols: Vec<usize> = columns.iter().map(Vec::len).collect();
+        let (keep_rows, keep_cols) = thinned(&points, rows.len(), &n_cols, bound);
         // The samples of the rows and columns kept.
         let kept: Vec<Vec<Sample>> = grid
             .iter()
@@ -518,6 +425,112 @@ impl Builder<'_> {
 }
 
 /// Upward unit normals at the vertices: the area-weighted normals of the triangles
+/// The rows (shared by the lanes) and each lane's columns that a mesh of `bound` keeps of
+/// full-resolution samples: `lanes[l]` holds a lane's points row by row, `n_cols[l]` of
+/// them a row, `n_rows` rows. The first and last row and column are kept; a quad of kept
+/// rows and columns whose two triangles (split along its diagonal from its first row and
+/// column) leave a finite sample farther than `bound` gets the middle row, the middle
+/// column or both, as the surface bends along or across it, until none does.
+fn thinned(lanes: &[Vec<[f64; 3]>], n_rows: usize, n_cols: &[usize], bound: f64) -> (Vec<bool>, Vec<Vec<bool>>) {
+    let mut keep_rows = vec![false; n_rows];
+    keep_rows[0] = true;
+    keep_rows[n_rows - 1] = true;
+    let mut keep_cols: Vec<Vec<bool>> = n_cols
+        .iter()
+        .map(|&n| {
+            let mut k = vec![false; n];
+            k[0] = true;
+            k[n - 1] = true;
+            k
+        })
+        .collect();
+    loop {
+        let kept_rows: Vec<usize> = (0..n_rows).filter(|&j| keep_rows[j]).collect();
+        let mut changed = false;
+        for (l, points) in lanes.iter().enumerate() {
+            let nc = n_cols[l];
+            let at = |j: usize, m: usize| points[j * nc + m];
+            let kept_cols: Vec<usize> = (0..nc).filter(|&m| keep_cols[l][m]).collect();
+            for r in kept_rows.windows(2) {
+                for c in kept_cols.windows(2) {
+                    let quad = (r[0], r[1], c[0], c[1]);
+                    let Some((row, col)) = split_of(&at, quad, bound) else { continue };
+                    let (r0, r1, c0, c1) = quad;
+                    if row && r1 - r0 >= 2 && !keep_rows[(r0 + r1) / 2] {
+                        keep_rows[(r0 + r1) / 2] = true;
+                        changed = true;
+                    }
+                    if col && c1 - c0 >= 2 && !keep_cols[l][(c0 + c1) / 2] {
+                        keep_cols[l][(c0 + c1) / 2] = true;
+                        changed = true;
+                    }
+                }
+            }
+        }
+        if !changed {
+            return (keep_rows, keep_cols);
+        }
+    }
+}
+
+/// Whether the quad (rows r0..r1, columns c0..c1) of the points `at` gives needs a middle
+/// row, a middle column (or both): `None` when its two triangles keep every finite sample
+/// within `bound`. A way that cannot be halved any more passes to the other.
+fn split_of(
+    at: &impl Fn(usize, usize) -> [f64; 3],
+    (r0, r1, c0, c1): (usize, usize, usize, usize),
+    bound: f64,
+) -> Option<(bool, bool)> {
+    if r1 - r0 < 2 && c1 - c0 < 2 {
+        return None;
+    }
+    let (p00, p10, p11, p01) = (at(r0, c0), at(r1, c0), at(r1, c1), at(r0, c1));
+    let far = (r0..=r1).any(|j| {
+        (c0..=c1).any(|m| {
+            let (x, y) = ((j - r0) as f64 / (r1 - r0).max(1) as f64, (m - c0) as f64 / (c1 - c0).max(1) as f64);
+            // The two triangles split the quad along (r0, c0)-(r1, c1).
+            let on = if x >= y {
+                add3(p00, add3(scale(sub(p10, p00), x - y), scale(sub(p11, p00), y)))
+            } else {
+                add3(p00, add3(scale(sub(p01, p00), y - x), scale(sub(p11, p00), x)))
+            };
+            !(distance(on, at(j, m)) <= bound) && at(j, m)[2].is_finite()
+        })
+    });
+    if !far {
+        return None;
+    }
+    // Which way the surface bends: samples off the straight line between the quad's sides
+    // along s (at its first, middle and last column) call for a row; across (at its rows),
+    // for a column.
+    let worst = |it: &mut dyn Iterator<Item = f64>| it.filter(|e| e.is_finite()).fold(0.0, f64::max);
+    let off_along = |m: usize| {
+        (r0..=r1).map(move |j| {
+            let w = (j - r0) as f64 / (r1 - r0).max(1) as f64;
+            distance(at(j, m), lerp(at(r0, m), at(r1, m), w))
+        })
+    };
+    let off_across = |j: usize| {
+        (c0..=c1).map(move |m| {
+            let w = (m - c0) as f64 / (c1 - c0).max(1) as f64;
+            distance(at(j, m), lerp(at(j, c0), at(j, c1), w))
+        })
+    };
+    let along = [c0, (c0 + c1) / 2, c1].iter().map(|&m| worst(&mut off_along(m))).fold(0.0, f64::max);
+    let across = [r0, (r0 + r1) / 2, r1].iter().map(|&j| worst(&mut off_across(j))).fold(0.0, f64::max);
+    let (mut row, mut col) = (along > 0.5 * bound, across > 0.5 * bound);
+    if !row && !col {
+        (row, col) = (true, true);
+    }
+    if row && r1 - r0 < 2 {
+        col = true;
+    }
+    if col && c1 - c0 < 2 {
+        row = true;
+    }
+    Some((row, col))
+}
+
 /// around each.
 fn normals(mesh: &Mesh) -> Vec<[f32; 3]> {
     let mut sum = vec![[0.0f64; 3]; mesh.positions.len()];
@@ -563,4 +576,73 @@ fn lerp(a: [f64; 3], b: [f64; 3], w: f64) -> [f64; 3] {
 fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
     let d = sub(a, b);
     (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A lane's points on a regular grid of `n_rows` x `n_cols`, 0.1 m apart, height `z`.
+    fn lane(n_rows: usize, n_cols: usize, z: impl Fn(f64, f64) -> f64) -> Vec<[f64; 3]> {
+        let mut out = Vec::new();
+        for j in 0..n_rows {
+            for m in 0..n_cols {
+                let (x, y) = (0.1 * j as f64, 0.1 * m as f64);
+                out.push([x, y, z(x, y)]);
+            }
+        }
+        out
+    }
+
+    /// Every sample lies within `bound` of the triangles of the kept quad around it.
+    fn within_bound(points: &[[f64; 3]], rows: &[bool], cols: &[bool], bound: f64) -> bool {
+        let nc = cols.len();
+        let at = |j: usize, m: usize| points[j * nc + m];
+        let kept = |k: &[bool]| -> Vec<usize> { (0..k.len()).filter(|&i| k[i]).collect() };
+        let (kr, kc) = (kept(rows), kept(cols));
+        kr.windows(2).all(|r| {
+            kc.windows(2).all(|c| {
+                let quad = (r[0], r[1], c[0], c[1]);
+                split_of(&at, quad, bound).is_none() || (r[1] - r[0] < 2 && c[1] - c[0] < 2)
+            })
+        })
+    }
+
+    #[test]
+    fn a_plane_keeps_its_corners_only() {
+        let points = lane(33, 17, |x, y| 0.02 * x - 0.01 * y + 3.0);
+        let (rows, cols) = thinned(&[points], 33, &[17], 0.001);
+        assert_eq!(rows.iter().filter(|&&k| k).count(), 2);
+        assert_eq!(cols[0].iter().filter(|&&k| k).count(), 2);
+    }
+
+    #[test]
+    fn a_bump_keeps_what_the_bound_needs_and_no_more_than_the_samples() {
+        let bump = |x: f64, y: f64| 0.05 * (-((x - 1.6).powi(2) + (y - 0.8).powi(2)) / 0.1).exp();
+        let lanes = [lane(33, 17, bump), lane(33, 9, |_, _| 0.0)];
+        for bound in [0.01, 0.002, 0.0005] {
+            let (rows, cols) = thinned(&lanes, 33, &[17, 9], bound);
+            for (l, points) in lanes.iter().enumerate() {
+                assert!(within_bound(points, &rows, &cols[l], bound), "bound {bound}, lane {l}");
+            }
+            // The flat lane keeps its border columns only; the rows it shares follow the bump.
+            assert_eq!(cols[1].iter().filter(|&&k| k).count(), 2);
+            let kept = rows.iter().filter(|&&k| k).count();
+            assert!(kept > 2 && kept < 33, "bound {bound}: {kept} rows");
+        }
+        // A tighter bound keeps at least as much.
+        let count = |b: f64| thinned(&lanes, 33, &[17, 9], b).0.iter().filter(|&&k| k).count();
+        assert!(count(0.0005) >= count(0.002) && count(0.002) >= count(0.01));
+    }
+
+    #[test]
+    fn a_hole_in_the_samples_is_met_at_full_resolution() {
+        // No height beyond x, y > 0.3: a quad with such a corner cannot say how far its
+        // samples lie, and is halved down to single cells; the flat part away from it is not.
+        let points = lane(17, 17, |x, y| if x > 1.05 && y > 1.05 { f64::NAN } else { 0.0 });
+        let (rows, cols) = thinned(&[points.clone()], 17, &[17], 0.001);
+        assert!(within_bound(&points, &rows, &cols[0], 0.001));
+        assert!(rows[10] && rows[11] && cols[0][10] && cols[0][11], "the hole's border at full resolution");
+        assert!(!rows[2] && !cols[0][2], "the flat part far from it thinned");
+    }
 }
