@@ -640,7 +640,7 @@ mod tests {
         // No height beyond x, y > 0.3: a quad with such a corner cannot say how far its
         // samples lie, and is halved down to single cells; the flat part away from it is not.
         let points = lane(17, 17, |x, y| if x > 1.05 && y > 1.05 { f64::NAN } else { 0.0 });
-        let (rows, cols) = thinned(&[points.clone()], 17, &[17], 0.001);
+        let (rows, cols) = thinned(std::slice::from_ref(&points), 17, &[17], 0.001);
         assert!(within_bound(&points, &rows, &cols[0], 0.001));
         assert!(rows[10] && rows[11] && cols[0][10] && cols[0][11], "the hole's border at full resolution");
         assert!(!rows[2] && !cols[0][2], "the flat part far from it thinned");
