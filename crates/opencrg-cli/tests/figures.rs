@@ -193,7 +193,19 @@ fn every_figure_comes_as_svg_with_its_text_and_as_antialiased_png() {
 
 #[test]
 fn the_guides_pictures_are_what_the_command_draws() {
-    let d = dir("docs");
+    guides_pictures_drawn("docs", &["demo_road.png", "demo_map.png", "mode_genuine.png"]);
+}
+
+#[test]
+#[ignore = "needs ../shared beside the checkout; test.sh runs it: cargo test -- --ignored shared_"]
+fn shared_maps_the_guides_town_is_what_the_command_draws() {
+    guides_pictures_drawn("docs-shared", &["town03.png"]);
+}
+
+/// Draws the guide's pictures with docs/figures.sh (`required` among them) and compares
+/// each with the one in docs/.
+fn guides_pictures_drawn(folder: &str, required: &[&str]) {
+    let d = dir(folder);
     let status = Command::new("bash")
         .arg(root().join("docs/figures.sh"))
         .arg(&d)
@@ -203,6 +215,9 @@ fn the_guides_pictures_are_what_the_command_draws() {
     assert!(status.success());
     let drawn: Vec<PathBuf> = std::fs::read_dir(&d).unwrap().map(|e| e.unwrap().path()).collect();
     assert!(drawn.len() >= 4, "{drawn:?}");
+    for name in required {
+        assert!(drawn.iter().any(|p| p.ends_with(name)), "{name} not drawn: {drawn:?}");
+    }
     for new in drawn {
         let name = new.file_name().unwrap().to_str().unwrap().to_string();
         let (w, h, pixels) = decode(&new);
