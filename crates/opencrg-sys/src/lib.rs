@@ -4,7 +4,7 @@
 //! A thin translation layer: ids to handles, pointers to references, `Result` to
 //! 1/0. Global state (the id tables, the message settings, the allocator hooks)
 //! exists only here, behind locks, because the classic API demands ids. Every export
-//! answers through [`entry`]: one panic guard, its messages sent through the call, none
+//! answers through `entry`: one panic guard, its messages sent through the call, none
 //! of them while a lock is held.
 
 // The exports, in the order the header declares them (cbindgen reads the modules in this
