@@ -16,6 +16,7 @@
 //! opencrg generate OUT --refline LINE.csv --width W --u-inc DU --v-inc DV [--surface F]
 //! opencrg import CLOUD OUT [--refline LINE.csv] [--width W] --u-inc DU --v-inc DV
 //! opencrg compare A B [--tolerance T]
+//! opencrg fmu ROAD OUT.fmu [--wheels N] [--fmi 2|3] [--binaries DIR]
 //! opencrg odr info MAP [--json]                  opencrg odr check MAP
 //! opencrg odr eval MAP < points                 opencrg odr render MAP OUT.png [--size PX]
 //! opencrg odr export MAP OUT.glb [--roads ID,..] [--lanes TYPE,..] [--max-error M]
@@ -28,6 +29,7 @@
 mod export;
 mod expr;
 mod files;
+mod fmu;
 mod geojson;
 mod info;
 mod make;
@@ -160,6 +162,8 @@ enum Command {
         #[arg(long)]
         plot: Option<PathBuf>,
     },
+    /// Pack the road (a CRG file, or a map with its CRG files) as an FMU (FMI 2 or 3, model exchange and co-simulation) answering height, normal and friction under each wheel.
+    Fmu(fmu::FmuArgs),
     #[command(flatten)]
     Make(make::MakeCommand),
     /// OpenDRIVE maps with CRG surfaces: info, check, eval, render, export, view.
@@ -423,6 +427,7 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
                 roughness::plot(&found, &name, segment).and_then(|figure| figure.write(&out))?;
             }
         }
+        Command::Fmu(args) => fmu::run(args)?,
         Command::Make(command) => return make::run(command, &budget),
         Command::Odr(command) => return odr::run(command, &budget),
     }

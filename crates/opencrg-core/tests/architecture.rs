@@ -8,10 +8,12 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// The workspace's crates, by folder under `crates/`.
-const CRATES: [&str; 8] = [
+const CRATES: [&str; 10] = [
     "opencrg-core",
     "opencrg-tools",
     "opencrg-odr",
+    "opencrg-fmu",
+    "opencrg-fmi",
     "opencrg-sys",
     "opencrg-cli",
     "opencrg-python",

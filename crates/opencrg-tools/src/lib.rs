@@ -11,7 +11,8 @@
 //! Measuring a road: [`iri`], [`psd`] and [`roughness`] (the International Roughness
 //! Index and the ISO 8608 class of wheel tracks). Meshes for 3D tools: [`mesh`] (the
 //! grid), [`simplify`] (within an error bound), [`map_mesh`] (the drivable surface of an
-//! OpenDRIVE map), written by [`mesh_files`].
+//! OpenDRIVE map), written by [`mesh_files`]. A road or a map as an FMU for simulation
+//! tools: [`fmu`].
 //!
 //! ```no_run
 //! let road = std::sync::Arc::new(opencrg_core::Road::load("road.crg")?);
@@ -33,6 +34,7 @@ mod analysis {
     pub mod roughness;
 }
 mod export {
+    pub mod fmu;
     pub(crate) mod gltf;
     pub mod map_mesh;
     pub mod mesh;
@@ -55,7 +57,7 @@ mod make {
 }
 
 pub use analysis::{iri, psd, roughness};
-pub use export::{map_mesh, mesh, mesh_files, simplify};
+pub use export::{fmu, map_mesh, mesh, mesh_files, simplify};
 pub use make::append::append;
 pub use make::channels::{change_channel, ChannelAction, LineChannel};
 pub use make::compare::{compare, Comparison};

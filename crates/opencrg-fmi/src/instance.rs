@@ -1,0 +1,405 @@
+//! One FMU instance: its road and wheels, its parameters, the FMI state it is in, and
+//! which call is allowed where. Shared by the FMI 2 and FMI 3 functions; nothing here
+//! is global, so instances on different threads never meet.
+
+use crate::log::{Logger, Status};
+use opencrg_core::settings::Value;
+use opencrg_fmu::variables::{self, Parameter, Quantity, Start, Type};
+use opencrg_fmu::{compat_named, Wheels};
+use opencrg_fmu::{Fmi, Fmu, Kind};
+use std::ffi::CString;
+use std::path::Path;
+
+/// Model exchange or co-simulation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Interface {
+    /// Model exchange: the importer integrates (there is nothing to integrate).
+    ModelExchange,
+    /// Co-simulation: the importer steps.
+    CoSimulation,
+}
+
+/// Where an instance is in FMI's state machine.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum State {
+    /// After instantiation (or reset).
+    Instantiated,
+    /// Between entering and leaving initialization.
+    Initialization,
+    /// Model exchange: event mode.
+    Event,
+    /// Model exchange: continuous-time mode.
+    ContinuousTime,
+    /// Co-simulation: between steps.
+    Step,
+    /// After terminate.
+    Terminated,
+    /// After a panic: only freeing is left.
+    Broken,
+}
+
+/// A call not done: its status and why.
+#[derive(Debug)]
+pub struct Refused {
+    /// Error, or Discard.
+    pub status: Status,
+    /// The reason, said through the logger.
+    pub message: String,
+}
+
+/// Refuses with status Error.
+pub fn error(message: impl ToString) -> Refused {
+    Refused { status: Status::Error, message: message.to_string() }
+}
+
+/// What a call does, for the check of the state it is made in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Act {
+    /// Set an input.
+    SetInput,
+    /// Set a fixed parameter.
+    SetFixed,
+    /// Set a tunable parameter.
+    SetTunable,
+    /// Read any variable.
+    Get,
+}
+
+/// A parameter's value.
+#[derive(Debug, Clone, PartialEq)]
+struct Parameters {
+    friction_default: f64,
+    compat: String,
+    /// A CRG file's options, in `Parameter::all` order.
+    options: Vec<(u32, Value)>,
+}
+
+/// One instance.
+pub struct Instance {
+    fmu: Fmu,
+    kind: Kind,
+    wheel_count: u32,
+    wheels: Wheels,
+    interface: Interface,
+    fmi: Fmi,
+    /// Where in the state machine.
+    pub state: State,
+    time: f64,
+    starts: Parameters,
+    parameters: Parameters,
+    logger: Logger,
+    /// Whether debug messages are wanted (errors are always said).
+    pub logging_on: bool,
+    /// What the last string get handed out (valid until the next call).
+    strings: Vec<CString>,
+}
+
+impl Instance {
+    /// Loads the road the resources in `resources` hold; refused: a token that is not
+    /// theirs, a road that cannot be loaded (the file and the reason named).
+    pub fn new(
+        token: &str,
+        resources: &Path,
+        interface: Interface,
+        fmi: Fmi,
+        logger: Logger,
+    ) -> Result<Instance, String> {
+        let fmu = Fmu::load(resources).map_err(|e| e.to_string())?;
+        if token != fmu.config.token {
+            return Err(format!(
+                "the model description's token {token} is not that of the resources in {} ({})",
+                resources.display(),
+                fmu.config.token
+            ));
+        }
+        let kind = fmu.config.kind;
+        let starts = Parameters {
+            friction_default: variables::FRICTION_DEFAULT,
+            compat: variables::COMPAT_DEFAULT.into(),
+            options: Parameter::all(kind)
+                .into_iter()
+                .filter_map(|p| match (p, fmu.ground.parameter_start(p)) {
+                    (Parameter::Option(id), Start::Integer(i)) => Some((id, Value::Int(i))),
+                    (Parameter::Option(id), Start::Real(d)) => Some((id, Value::Double(d))),
+                    _ => None,
+                })
+                .collect(),
+        };
+        let wheels = fmu.wheels(&[]).map_err(|e| e.to_string())?;
+        let wheel_count = fmu.config.wheels;
+        Ok(Instance {
+            fmu,
+            kind,
+            wheel_count,
+            wheels,
+            interface,
+            fmi,
+            state: State::Instantiated,
+            time: 0.0,
+            parameters: starts.clone(),
+            starts,
+            logger,
+            logging_on: false,
+            strings: Vec::new(),
+        })
+    }
+
+    /// Where its messages go.
+    pub fn logger(&self) -> &Logger {
+        &self.logger
+    }
+
+    /// Model exchange or co-simulation.
+    pub fn interface(&self) -> Interface {
+        self.interface
+    }
+
+    /// Refuses a call made in a state that does not allow it.
+    pub fn expect(&self, allowed: &[State], what: &str) -> Result<(), Refused> {
+        if allowed.contains(&self.state) {
+            Ok(())
+        } else {
+            Err(error(format!("{what} is not allowed in the state {:?}", self.state)))
+        }
+    }
+
+    /// Refuses an act in a state that does not allow it.
+    fn may(&self, act: Act, name: &str) -> Result<(), Refused> {
+        use State::*;
+        let allowed: &[State] = match act {
+            Act::SetInput => &[Instantiated, Initialization, Event, ContinuousTime, Step],
+            Act::SetFixed => &[Instantiated, Initialization],
+            Act::SetTunable => &[Instantiated, Initialization, Event, Step],
+            Act::Get => &[Initialization, Event, ContinuousTime, Step, Terminated],
+        };
+        let what = match act {
+            Act::Get => format!("reading {name}"),
+            Act::SetInput => format!("setting the input {name}"),
+            Act::SetFixed => format!("setting the fixed parameter {name}"),
+            Act::SetTunable => format!("setting the tunable parameter {name}"),
+        };
+        self.expect(allowed, &what)
+    }
+
+    /// The variable's name, for messages.
+    fn name_of(&self, vr: u32) -> String {
+        if let Some((wheel, q)) = variables::wheel_of(self.kind, self.wheel_count, vr) {
+            return format!("wheel[{wheel}].{}", q.name());
+        }
+        match Parameter::from_vr(self.kind, vr) {
+            Some(p) => p.name(),
+            None if vr == variables::TIME => "time".into(),
+            None => format!("value reference {vr}"),
+        }
+    }
+
+    fn not_a(&self, vr: u32, ty: &str) -> Refused {
+        let what = self.name_of(vr);
+        if what.starts_with("value reference") {
+            error(format!("{what} is no variable of this FMU"))
+        } else {
+            error(format!("{what} (value reference {vr}) is not a {ty} variable"))
+        }
+    }
+
+    /// The time (FMI 2's setup or FMI 3's initialization sets it, steps advance it).
+    pub fn set_time(&mut self, time: f64) {
+        self.time = time;
+    }
+
+    /// The current time.
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    /// A Real variable.
+    #[inline]
+    pub fn real(&mut self, vr: u32) -> Result<f64, Refused> {
+        if let Some((wheel, q)) = variables::wheel_of(self.kind, self.wheel_count, vr) {
+            if q.ty() == Type::Real {
+                if !matches!(self.state, State::Initialization | State::Event | State::ContinuousTime | State::Step) {
+                    self.may(Act::Get, &self.name_of(vr))?;
+                }
+                return Ok(self.wheels.real(wheel as usize - 1, q, self.parameters.friction_default));
+            }
+            return Err(self.not_a(vr, "Real"));
+        }
+        self.may(Act::Get, &self.name_of(vr))?;
+        match Parameter::from_vr(self.kind, vr) {
+            Some(Parameter::FrictionDefault) => Ok(self.parameters.friction_default),
+            Some(Parameter::Option(id)) => match self.option(id) {
+                Value::Double(d) => Ok(d),
+                Value::Int(_) => Err(self.not_a(vr, "Real")),
+            },
+            _ if vr == variables::TIME && self.time_is_variable() => Ok(self.time),
+            _ => Err(self.not_a(vr, "Real")),
+        }
+    }
+
+    /// Sets a Real variable.
+    #[inline]
+    pub fn set_real(&mut self, vr: u32, value: f64) -> Result<(), Refused> {
+        if let Some((wheel, q)) = variables::wheel_of(self.kind, self.wheel_count, vr) {
+            if q.is_input() {
+                if self.state == State::Terminated || self.state == State::Broken {
+                    self.may(Act::SetInput, &self.name_of(vr))?;
+                }
+                self.wheels.set(wheel as usize - 1, q, value);
+                return Ok(());
+            }
+            return Err(error(format!("{} is an output: it cannot be set", self.name_of(vr))));
+        }
+        match Parameter::from_vr(self.kind, vr) {
+            Some(p @ Parameter::FrictionDefault) => {
+                self.may(Act::SetTunable, &p.name())?;
+                if !value.is_finite() {
+                    return Err(error(format!("{} = {value}: a finite number is needed", p.name())));
+                }
+                self.parameters.friction_default = value;
+                Ok(())
+            }
+            Some(p @ Parameter::Option(id)) if p.ty() == Type::Real => {
+                self.may(Act::SetFixed, &p.name())?;
+                self.set_option(id, Value::Double(value))
+            }
+            _ => Err(self.not_a(vr, "Real")),
+        }
+    }
+
+    /// An Integer variable.
+    #[inline]
+    pub fn integer(&mut self, vr: u32) -> Result<i32, Refused> {
+        self.may(Act::Get, &self.name_of(vr))?;
+        if let Some((wheel, q)) = variables::wheel_of(self.kind, self.wheel_count, vr) {
+            if q.ty() == Type::Integer {
+                return Ok(self.wheels.integer(wheel as usize - 1, q));
+            }
+            return Err(self.not_a(vr, "Integer"));
+        }
+        match Parameter::from_vr(self.kind, vr) {
+            Some(Parameter::Option(id)) => match self.option(id) {
+                Value::Int(i) => Ok(i),
+                Value::Double(_) => Err(self.not_a(vr, "Integer")),
+            },
+            _ => Err(self.not_a(vr, "Integer")),
+        }
+    }
+
+    /// Sets an Integer variable.
+    pub fn set_integer(&mut self, vr: u32, value: i32) -> Result<(), Refused> {
+        match Parameter::from_vr(self.kind, vr) {
+            Some(p @ Parameter::Option(id)) if p.ty() == Type::Integer => {
+                self.may(Act::SetFixed, &p.name())?;
+                self.set_option(id, Value::Int(value))
+            }
+            _ => Err(self.not_a(vr, "settable Integer")),
+        }
+    }
+
+    /// A Boolean variable.
+    #[inline]
+    pub fn boolean(&mut self, vr: u32) -> Result<bool, Refused> {
+        self.may(Act::Get, &self.name_of(vr))?;
+        match variables::wheel_of(self.kind, self.wheel_count, vr) {
+            Some((wheel, Quantity::OnRoad)) => Ok(self.wheels.on_road(wheel as usize - 1)),
+            _ => Err(self.not_a(vr, "Boolean")),
+        }
+    }
+
+    /// Sets a Boolean variable: there is none to set.
+    pub fn set_boolean(&mut self, vr: u32) -> Result<(), Refused> {
+        Err(self.not_a(vr, "settable Boolean"))
+    }
+
+    /// String variables, handed out as C strings valid until the next call.
+    pub fn strings(&mut self, vrs: &[u32]) -> Result<&[CString], Refused> {
+        self.strings.clear();
+        for &vr in vrs {
+            self.may(Act::Get, &self.name_of(vr))?;
+            match Parameter::from_vr(self.kind, vr) {
+                Some(Parameter::Compat) => self.strings.push(crate::log::c_text(&self.parameters.compat)),
+                _ => return Err(self.not_a(vr, "String")),
+            }
+        }
+        Ok(&self.strings)
+    }
+
+    /// Sets a String variable.
+    pub fn set_string(&mut self, vr: u32, value: &str) -> Result<(), Refused> {
+        match Parameter::from_vr(self.kind, vr) {
+            Some(p @ Parameter::Compat) => {
+                self.may(Act::SetFixed, &p.name())?;
+                let compat = compat_named(value).map_err(error)?;
+                let mut fmu_compat = self.parameters.clone();
+                fmu_compat.compat = value.trim().to_string();
+                self.fmu.set_compat(compat).map_err(error)?;
+                self.parameters = fmu_compat;
+                self.rebuild()
+            }
+            _ => Err(self.not_a(vr, "String")),
+        }
+    }
+
+    /// Whether the time is a variable (FMI 3's; FMI 2 lists none, and its value
+    /// reference 0 is unknown there).
+    fn time_is_variable(&self) -> bool {
+        self.fmi == Fmi::V3
+    }
+
+    fn option(&self, id: u32) -> Value {
+        self.parameters.options.iter().find(|o| o.0 == id).map_or(Value::Int(0), |o| o.1)
+    }
+
+    /// Sets an option's value and makes the wheels anew; the value refused (and the
+    /// old one kept) where the C API refuses it.
+    fn set_option(&mut self, id: u32, value: Value) -> Result<(), Refused> {
+        let old = self.parameters.clone();
+        if let Some(slot) = self.parameters.options.iter_mut().find(|o| o.0 == id) {
+            slot.1 = value;
+        }
+        self.rebuild().inspect_err(|_| self.parameters = old)
+    }
+
+    /// The wheels anew with the options that differ from their start values, where
+    /// they were.
+    fn rebuild(&mut self) -> Result<(), Refused> {
+        let changed: Vec<(u32, Value)> =
+            self.parameters.options.iter().copied().filter(|o| !self.starts.options.contains(o)).collect();
+        let mut wheels = self.fmu.wheels(&changed).map_err(error)?;
+        for i in 0..wheels.len() {
+            for q in [Quantity::X, Quantity::Y] {
+                wheels.set(i, q, self.wheels.real(i, q, 0.0));
+            }
+        }
+        self.wheels = wheels;
+        Ok(())
+    }
+
+    /// Back to the state after instantiation: start values, time 0.
+    pub fn reset(&mut self) -> Result<(), Refused> {
+        if self.parameters.compat != self.starts.compat {
+            let compat = compat_named(&self.starts.compat).map_err(error)?;
+            self.fmu.set_compat(compat).map_err(error)?;
+        }
+        self.parameters = self.starts.clone();
+        self.wheels = self.fmu.wheels(&[]).map_err(error)?;
+        self.time = 0.0;
+        self.state = State::Instantiated;
+        Ok(())
+    }
+
+    /// Which variables output `vr` depends on (FMI 3): its wheel's x and y.
+    pub fn dependencies(&self, vr: u32) -> Result<Vec<u32>, Refused> {
+        match variables::wheel_of(self.kind, self.wheel_count, vr) {
+            Some((wheel, q)) if !q.is_input() => {
+                Ok(vec![variables::wheel_vr(wheel, Quantity::X), variables::wheel_vr(wheel, Quantity::Y)])
+            }
+            Some(_) => Ok(Vec::new()),
+            None => match Parameter::from_vr(self.kind, vr) {
+                Some(_) => Ok(Vec::new()),
+                None if vr == variables::TIME && self.time_is_variable() => Ok(Vec::new()),
+                None => Err(self.not_a(vr, "known")),
+            },
+        }
+    }
+}

@@ -1,0 +1,360 @@
+//! The road an FMU answers for, loaded, and the answers under each wheel.
+//!
+//! A CRG file answers as the C API does after `crgLoaderReadFile`, `crgCheck` and
+//! `crgDataSetModifiersApply`: (u, v) from the x/y search, z at that (u, v) as
+//! `crgEvalxy2z` gives it, heading and curvature as `crgEvaluv2pk`, the normal from the
+//! interpolation's gradient. A map answers as a [`Probe`] of the wheel's own that meets
+//! each new position of the wheel once (as `opencrg odr eval` answers the wheel's
+//! positions in turn), the normal from a second probe of its own.
+//! Each wheel's answer is computed when an output is read after its position moved, and
+//! only the part read (the normal, the heading and curvature are computed when asked).
+
+use crate::variables::{unset_value, Kind, Parameter, Quantity, Start, COMPAT_DEFAULT, FRICTION_DEFAULT};
+use opencrg_core::settings::{self, Accepts, Value};
+use opencrg_core::{Compat, ContactPoint, Error, Result};
+use opencrg_odr::{Map, Probe, Surface};
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// A loaded road: a CRG file ready to evaluate, or a map with its CRG files.
+#[derive(Clone)]
+pub enum Ground {
+    /// A CRG file, checked and its modifiers applied.
+    Crg(Arc<opencrg_core::Road>),
+    /// A map.
+    Map(Arc<Surface>),
+}
+
+impl Ground {
+    /// Reads the CRG file in `path` as the C API's programs prepare it: read, checked
+    /// (refused where the check fails) and its modifiers applied.
+    pub fn load_crg(path: &Path, compat: Compat) -> Result<Ground> {
+        let mut road = opencrg_core::Road::load_with(path, compat)?;
+        road.check().map_err(|e| Error::Check(format!("{}: {e}", path.display())))?;
+        road.apply_modifiers();
+        Ok(Ground::Crg(Arc::new(road)))
+    }
+
+    /// Reads the map in `path` and the CRG files its records name; a record whose file
+    /// (as written) is in `moved` reads the path given there instead.
+    pub fn load_map(path: &Path, moved: &[(String, PathBuf)]) -> Result<Ground> {
+        let mut map = Map::load(path)?;
+        let records = map.roads.iter_mut().flat_map(|r| &mut r.crg);
+        for record in records.chain(map.junctions.iter_mut().flat_map(|j| &mut j.crg)) {
+            if let Some((_, to)) = moved.iter().find(|(file, _)| *file == record.file) {
+                record.path = to.clone();
+            }
+        }
+        Ok(Ground::Map(Arc::new(Surface::new(map)?)))
+    }
+
+    /// A CRG file or a map.
+    pub fn kind(&self) -> Kind {
+        match self {
+            Ground::Crg(_) => Kind::Crg,
+            Ground::Map(_) => Kind::Map,
+        }
+    }
+
+    /// Where the wheels start: a CRG file's reference line (v = 0, or the nearest v of
+    /// the grid) 1 m after its start, a map's first road's reference line 1 m after its
+    /// start (each the middle of a shorter road).
+    pub fn start_point(&self) -> (f64, f64) {
+        match self {
+            Ground::Crg(road) => {
+                let ((u0, u1), (v0, v1)) = (road.u_range(), road.v_range());
+                let cp = ContactPoint::new(road.clone());
+                cp.uv_to_xy(u0 + (0.5 * (u1 - u0)).min(1.0), 0f64.clamp(v0, v1)).unwrap_or((0.0, 0.0))
+            }
+            Ground::Map(surface) => match surface.map().roads.first() {
+                Some(road) => {
+                    let p = road.reference((0.5 * road.length).min(1.0));
+                    (p.x, p.y)
+                }
+                None => (0.0, 0.0),
+            },
+        }
+    }
+
+    /// The start value of a parameter: what the road gives, or what behaves as unset.
+    pub fn parameter_start(&self, parameter: Parameter) -> Start {
+        match parameter {
+            Parameter::FrictionDefault => Start::Real(FRICTION_DEFAULT),
+            Parameter::Compat => Start::String(COMPAT_DEFAULT.into()),
+            Parameter::Option(id) => {
+                let value = match self {
+                    Ground::Crg(road) => road.options().get(id),
+                    Ground::Map(_) => None,
+                };
+                match value.unwrap_or_else(|| unset_value(id)) {
+                    Value::Int(i) => Start::Integer(i),
+                    Value::Double(d) => Start::Real(d),
+                }
+            }
+        }
+    }
+}
+
+/// One wheel's answer, as far as it was computed since the wheel last moved.
+#[derive(Debug, Clone, Copy, Default)]
+struct Answer {
+    /// The base answer: computed at all?
+    known: bool,
+    on_road: bool,
+    z: f64,
+    /// Friction the road gives (NaN: none).
+    friction: f64,
+    /// A CRG file's u, v, or a map's s, t.
+    a: f64,
+    b: f64,
+    road: i32,
+    lane: i32,
+    /// Whether the library answered the height (a CRG file answers beyond its grid too).
+    answered: bool,
+    /// Whether `a` and `b` were found (a CRG file's search answers where its height may
+    /// be refused).
+    located: bool,
+    normal: Option<[f64; 3]>,
+    pk: Option<(f64, f64)>,
+}
+
+/// The evaluator of one wheel (held in place, one per wheel: no indirection on the
+/// hot path, whatever the size difference).
+#[allow(clippy::large_enum_variant)]
+enum Evaluator {
+    Crg(ContactPoint),
+    /// A map's probe for the ground, and one for the normal (whose queries around the
+    /// wheel would otherwise move the first one's track).
+    Map(Probe, Probe),
+}
+
+/// One wheel: where it is, its evaluator, its answer.
+struct Wheel {
+    x: f64,
+    y: f64,
+    evaluator: Evaluator,
+    answer: Answer,
+}
+
+/// The wheels of one FMU instance: their positions and answers.
+pub struct Wheels {
+    wheels: Vec<Wheel>,
+    /// A CRG file's u and v ranges (the grid: on the road within them).
+    ranges: Option<((f64, f64), (f64, f64))>,
+}
+
+/// What an output holds off the road (see the guide): no height, the normal up, the
+/// friction parameter's value, no road or lane.
+const UP: [f64; 3] = [0.0, 0.0, 1.0];
+
+impl Wheels {
+    /// `count` wheels at `start` on `ground`, a CRG file's contact points with the
+    /// options `changed` (identifier and value; a value that behaves as unset removes
+    /// the option). Refused: an option value the C API refuses, named.
+    pub fn new(ground: &Ground, count: usize, start: (f64, f64), changed: &[(u32, Value)]) -> Result<Wheels> {
+        let mut wheels = Vec::with_capacity(count);
+        for _ in 0..count {
+            let evaluator = match ground {
+                Ground::Crg(road) => {
+                    let mut cp = ContactPoint::new(road.clone());
+                    for &(id, value) in changed {
+                        let removes = value == unset_value(id)
+                            && settings::info(id).is_some_and(|s| s.accepts == Accepts::Positive);
+                        if removes {
+                            cp.remove_option(id);
+                        } else {
+                            cp.set_option_value(id, value).map_err(|e| {
+                                Error::out_of_range(format!("{} = {}: {e}", Parameter::Option(id).name(), shown(value)))
+                            })?;
+                        }
+                    }
+                    Evaluator::Crg(cp)
+                }
+                Ground::Map(surface) => Evaluator::Map(surface.probe(), surface.probe()),
+            };
+            wheels.push(Wheel { x: start.0, y: start.1, evaluator, answer: Answer::default() });
+        }
+        let ranges = match ground {
+            Ground::Crg(road) => Some((road.u_range(), road.v_range())),
+            Ground::Map(_) => None,
+        };
+        Ok(Wheels { wheels, ranges })
+    }
+
+    /// How many wheels.
+    pub fn len(&self) -> usize {
+        self.wheels.len()
+    }
+
+    /// Whether there are none.
+    pub fn is_empty(&self) -> bool {
+        self.wheels.is_empty()
+    }
+
+    /// Moves wheel `i` (0-based): sets its x or y (other quantities are not inputs and
+    /// are ignored).
+    #[inline]
+    pub fn set(&mut self, i: usize, quantity: Quantity, value: f64) {
+        let wheel = &mut self.wheels[i];
+        let slot = match quantity {
+            Quantity::X => &mut wheel.x,
+            Quantity::Y => &mut wheel.y,
+            _ => return,
+        };
+        // A set to the same value keeps the answer (importers set every input each step).
+        if slot.to_bits() != value.to_bits() {
+            *slot = value;
+            wheel.answer.known = false;
+        }
+    }
+
+    /// A Real quantity of wheel `i` (0-based): its input, or its answer, computed if the
+    /// wheel moved; `friction_default` where the road gives no friction.
+    #[inline]
+    pub fn real(&mut self, i: usize, quantity: Quantity, friction_default: f64) -> f64 {
+        let ranges = self.ranges;
+        let wheel = &mut self.wheels[i];
+        match quantity {
+            Quantity::X => return wheel.x,
+            Quantity::Y => return wheel.y,
+            _ => {}
+        }
+        wheel.base(ranges);
+        let a = wheel.answer;
+        match quantity {
+            Quantity::Z => a.z,
+            Quantity::Friction if a.on_road && a.friction.is_finite() => a.friction,
+            Quantity::Friction => friction_default,
+            Quantity::U | Quantity::V | Quantity::S | Quantity::T => {
+                let value = if matches!(quantity, Quantity::U | Quantity::S) { a.a } else { a.b };
+                if a.located {
+                    value
+                } else {
+                    0.0
+                }
+            }
+            Quantity::Nx | Quantity::Ny | Quantity::Nz => {
+                let n = wheel.normal();
+                n[quantity as usize - Quantity::Nx as usize]
+            }
+            Quantity::Heading => wheel.pk().0,
+            Quantity::Curvature => wheel.pk().1,
+            _ => 0.0,
+        }
+    }
+
+    /// An Integer quantity of wheel `i` (0-based): a map's road and lane.
+    #[inline]
+    pub fn integer(&mut self, i: usize, quantity: Quantity) -> i32 {
+        let ranges = self.ranges;
+        let wheel = &mut self.wheels[i];
+        wheel.base(ranges);
+        match quantity {
+            Quantity::Road => wheel.answer.road,
+            Quantity::Lane => wheel.answer.lane,
+            _ => 0,
+        }
+    }
+
+    /// Whether wheel `i` (0-based) is on the road.
+    #[inline]
+    pub fn on_road(&mut self, i: usize) -> bool {
+        let ranges = self.ranges;
+        let wheel = &mut self.wheels[i];
+        wheel.base(ranges);
+        wheel.answer.on_road
+    }
+}
+
+impl Wheel {
+    /// Computes the base answer if the wheel moved since: found where the road answers
+    /// the height and the wheel is on the road (within a CRG file's grid, on a map's
+    /// road); a CRG file's u and v wherever its search answers.
+    #[inline]
+    fn base(&mut self, ranges: Option<((f64, f64), (f64, f64))>) {
+        if self.answer.known {
+            return;
+        }
+        let (x, y) = (self.x, self.y);
+        let mut answer = Answer { known: true, road: -1, friction: f64::NAN, ..Answer::default() };
+        match &mut self.evaluator {
+            Evaluator::Crg(cp) => {
+                if let Ok((u, v)) = cp.xy_to_uv(x, y) {
+                    answer = Answer { located: true, a: u, b: v, ..answer };
+                    match cp.z_of_found(u, v) {
+                        Ok(z) if z.is_finite() && x.is_finite() && y.is_finite() => {
+                            let ((u0, u1), (v0, v1)) = ranges.unwrap_or(((u, u), (v, v)));
+                            let inside = (u0..=u1).contains(&u) && (v0..=v1).contains(&v);
+                            answer = Answer { on_road: inside, answered: true, z, ..answer };
+                        }
+                        _ => {}
+                    }
+                }
+            }
+            Evaluator::Map(probe, _) => {
+                if let Some(g) = probe.ground(x, y).filter(|g| g.z.is_finite()) {
+                    let road = i32::try_from(g.road).unwrap_or(i32::MAX);
+                    answer = Answer {
+                        on_road: true,
+                        answered: true,
+                        located: true,
+                        z: g.z,
+                        friction: g.friction,
+                        a: g.s,
+                        b: g.t,
+                        road,
+                        lane: g.lane,
+                        ..answer
+                    };
+                }
+            }
+        }
+        self.answer = answer;
+    }
+
+    /// The upward unit normal (the base answer known); up where none is known.
+    fn normal(&mut self) -> [f64; 3] {
+        if let Some(n) = self.answer.normal {
+            return n;
+        }
+        let a = self.answer;
+        let n = if !a.answered {
+            UP
+        } else {
+            let n = match &mut self.evaluator {
+                Evaluator::Crg(cp) => cp.uv_to_normal(a.a, a.b).ok().map(|(_, n)| n),
+                Evaluator::Map(_, probe) => probe.normal(self.x, self.y),
+            };
+            n.filter(|n| n.iter().all(|c| c.is_finite())).unwrap_or(UP)
+        };
+        self.answer.normal = Some(n);
+        n
+    }
+
+    /// A CRG file's heading and curvature (the base answer known); 0 where none.
+    fn pk(&mut self) -> (f64, f64) {
+        if let Some(pk) = self.answer.pk {
+            return pk;
+        }
+        let a = self.answer;
+        let pk = match &self.evaluator {
+            Evaluator::Crg(cp) if a.located => cp.uv_to_pk(a.a, a.b).ok(),
+            _ => None,
+        };
+        let pk = pk.filter(|(p, k)| p.is_finite() && k.is_finite()).unwrap_or((0.0, 0.0));
+        self.answer.pk = Some(pk);
+        pk
+    }
+}
+
+fn shown(value: Value) -> String {
+    match value {
+        Value::Int(i) => i.to_string(),
+        Value::Double(d) => d.to_string(),
+    }
+}
+
+/// Reads a behaviour profile's name as the `compat` parameter takes it.
+pub fn compat_named(name: &str) -> Result<Compat> {
+    name.parse::<Compat>().map_err(|e| Error::out_of_range(format!("compat: {e}")))
+}

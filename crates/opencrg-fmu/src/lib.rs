@@ -1,0 +1,104 @@
+//! OpenCRG roads and OpenDRIVE maps with CRG surfaces as FMUs (Functional Mock-up
+//! Units, FMI 2.0 and 3.0): what an FMU of a road holds and answers, apart from FMI's C
+//! functions (the `opencrg-fmi` binary) and the packing into a zip (`opencrg fmu`).
+//!
+//! - [`variables`]: each wheel's inputs (x, y) and outputs (height, friction, normal,
+//!   on the road; a map's s, t, road and lane; a CRG file's u, v, heading and
+//!   curvature), the parameters, their value references.
+//! - [`description`]: the model description.
+//! - [`config`]: the file in `resources/` that tells the binary what to load.
+//! - [`Ground`] and [`Wheels`]: the road loaded, and the answers under each wheel.
+//!
+//! ```no_run
+//! use opencrg_fmu::{Fmu, Quantity};
+//! let fmu = Fmu::load("unpacked/resources".as_ref())?;
+//! let mut wheels = fmu.wheels(&[])?;
+//! wheels.set(0, Quantity::X, 10.0);
+//! wheels.set(0, Quantity::Y, 0.5);
+//! println!("z {}", wheels.real(0, Quantity::Z, 1.0));
+//! # Ok::<(), opencrg_core::Error>(())
+//! ```
+#![warn(missing_docs)]
+
+pub mod config;
+pub mod description;
+mod ground;
+pub mod variables;
+
+pub use config::Config;
+pub use description::{model_description, Fmi, Meta};
+pub use ground::{compat_named, Ground, Wheels};
+pub use variables::{Kind, Parameter, Quantity, Start, Type, Variable};
+
+use opencrg_core::settings::Value;
+use opencrg_core::{Compat, Error, Result};
+use std::path::{Path, PathBuf};
+
+/// An FMU's road, loaded from its `resources/` folder as its configuration says.
+pub struct Fmu {
+    /// What the resources hold.
+    pub config: Config,
+    /// The road, loaded.
+    pub ground: Ground,
+    resources: PathBuf,
+    compat: Compat,
+}
+
+impl Fmu {
+    /// Reads `resources/opencrg-fmu.txt` and loads the road it names (a CRG file in the
+    /// current behaviour profile). Refused, with the file and the reason: a missing or
+    /// damaged configuration, a road or CRG file that cannot be read or is refused.
+    pub fn load(resources: &Path) -> Result<Fmu> {
+        let file = resources.join(config::FILE_NAME);
+        let text = std::fs::read_to_string(&file).map_err(|e| Error::reading(&file, e))?;
+        let config = Config::parse(&text, &file)?;
+        let compat = Compat::default();
+        let ground = load_ground(resources, &config, compat)?;
+        Ok(Fmu { config, ground, resources: resources.to_path_buf(), compat })
+    }
+
+    /// The behaviour profile the road was loaded with.
+    pub fn compat(&self) -> Compat {
+        self.compat
+    }
+
+    /// Loads a CRG file again in another behaviour profile (a map's files are read in
+    /// the current one).
+    pub fn set_compat(&mut self, compat: Compat) -> Result<()> {
+        if compat != self.compat && self.config.kind == Kind::Crg {
+            self.ground = load_ground(&self.resources, &self.config, compat)?;
+            self.compat = compat;
+        }
+        Ok(())
+    }
+
+    /// The model's variables (FMI 3's time first when `with_time`).
+    pub fn variables(&self, with_time: bool) -> Vec<Variable> {
+        variables_of(&self.ground, self.config.wheels, with_time)
+    }
+
+    /// The wheels at their start point, a CRG file's contact points with the options
+    /// `changed`.
+    pub fn wheels(&self, changed: &[(u32, Value)]) -> Result<Wheels> {
+        Wheels::new(&self.ground, self.config.wheels as usize, self.ground.start_point(), changed)
+    }
+}
+
+/// The variables of an FMU with `wheels` wheels on `ground` (FMI 3's time first when
+/// `with_time`), their start values from the road.
+pub fn variables_of(ground: &Ground, wheels: u32, with_time: bool) -> Vec<Variable> {
+    variables::variables(ground.kind(), wheels, with_time, ground.start_point(), |p| ground.parameter_start(p))
+}
+
+/// Loads the road `config` names under `resources`.
+pub fn load_ground(resources: &Path, config: &Config, compat: Compat) -> Result<Ground> {
+    let road = Config::resolve(resources, &config.road);
+    match config.kind {
+        Kind::Crg => Ground::load_crg(&road, compat),
+        Kind::Map => {
+            let moved: Vec<(String, PathBuf)> =
+                config.crg.iter().map(|(file, path)| (file.clone(), Config::resolve(resources, path))).collect();
+            Ground::load_map(&road, &moved)
+        }
+    }
+}

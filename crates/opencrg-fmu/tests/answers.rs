@@ -1,0 +1,110 @@
+//! The wheels answer what the C API's calls answer: on a CRG file, (u, v) of
+//! `crgEvalxy2uv`, z of `crgEvalxy2z` and heading and curvature of `crgEvaluv2pk`, each
+//! made in turn on one contact point as a program would (here the evaluator's own
+//! contact point, which the C API wraps), to the bit, along paths over the road and off
+//! it; on a map, what a probe of its own answers.
+
+use opencrg_core::{Compat, ContactPoint};
+use opencrg_fmu::{Ground, Quantity, Wheels};
+use std::path::{Path, PathBuf};
+
+fn demo(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/data").join(name)
+}
+
+/// Points along the road's reference line with v swinging across it and beyond.
+fn path(road: &std::sync::Arc<opencrg_core::Road>, n: usize) -> Vec<(f64, f64)> {
+    let ((u0, u1), (v0, v1)) = (road.u_range(), road.v_range());
+    let cp = ContactPoint::new(road.clone());
+    (0..n)
+        .map(|k| {
+            let f = k as f64 / (n - 1) as f64;
+            let u = u0 - 2.0 + f * (u1 - u0 + 4.0);
+            let v = 0.5 * (v0 + v1) + 0.6 * (v1 - v0) * (k as f64 * 0.37).sin();
+            cp.uv_to_xy(u, v).unwrap()
+        })
+        .collect()
+}
+
+fn same(a: f64, b: f64) -> bool {
+    a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan())
+}
+
+/// One CRG file: the first wheel against a contact point making the C API's calls.
+fn crg_agrees(file: &Path) -> usize {
+    let ground = Ground::load_crg(file, Compat::default()).unwrap();
+    let Ground::Crg(road) = &ground else { unreachable!() };
+    let mut wheels = Wheels::new(&ground, 2, (0.0, 0.0), &[]).unwrap();
+    let mut cp = ContactPoint::new(road.clone());
+    let points = path(road, 400);
+    let mut on = 0;
+    for &(x, y) in &points {
+        wheels.set(0, Quantity::X, x);
+        wheels.set(0, Quantity::Y, y);
+        // The C API's answers; 0 where it refuses.
+        let (u, v) = cp.xy_to_uv(x, y).unwrap_or((0.0, 0.0));
+        let z = cp.xy_to_z(x, y).ok().filter(|z| z.is_finite()).unwrap_or(0.0);
+        let (phi, curv) = cp.xy_to_uv(x, y).and_then(|(u, v)| cp.uv_to_pk(u, v)).unwrap_or((0.0, 0.0));
+        let got = [Quantity::U, Quantity::V, Quantity::Z, Quantity::Heading, Quantity::Curvature]
+            .map(|q| wheels.real(0, q, 1.0));
+        for (q, (g, want)) in ["u", "v", "z", "heading", "curvature"].iter().zip(got.iter().zip([u, v, z, phi, curv])) {
+            assert!(same(*g, want), "{}: ({x}, {y}): {q} {g} against {want}", file.display());
+        }
+        on += usize::from(wheels.on_road(0));
+    }
+    assert!(
+        on > points.len() / 4 && on < points.len(),
+        "{}: {on} of {} points on the road",
+        file.display(),
+        points.len()
+    );
+    points.len()
+}
+
+#[test]
+fn the_demo_road_answers_as_the_c_api() {
+    crg_agrees(&demo("demo_road.crg"));
+}
+
+#[test]
+#[ignore = "needs ../shared beside the checkout; test.sh runs it: cargo test -- --ignored shared_"]
+fn shared_samples_answer_as_the_c_api() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/conformance");
+    let mut checked = 0;
+    for sub in ["crg-txt", "crg-bin"] {
+        let mut files: Vec<PathBuf> = std::fs::read_dir(dir.join(sub)).unwrap().map(|e| e.unwrap().path()).collect();
+        files.sort();
+        for file in files.iter().filter(|f| f.extension().is_some_and(|e| e == "crg")) {
+            // Files the C API's check refuses are refused by the FMU too (and tested so).
+            if Ground::load_crg(file, Compat::default()).is_err() {
+                continue;
+            }
+            checked += crg_agrees(file);
+        }
+    }
+    assert!(checked >= 5_000, "{checked} points");
+}
+
+#[test]
+fn off_the_road_and_bad_input_give_the_documented_values() {
+    let ground = Ground::load_map(&demo("demo_map.xodr"), &[]).unwrap();
+    let mut wheels = Wheels::new(&ground, 1, (0.0, 0.0), &[]).unwrap();
+    for (x, y) in [(1e6, 1e6), (f64::NAN, 0.0), (0.0, f64::INFINITY)] {
+        wheels.set(0, Quantity::X, x);
+        wheels.set(0, Quantity::Y, y);
+        assert!(!wheels.on_road(0), "({x}, {y})");
+        let values =
+            [Quantity::Z, Quantity::Friction, Quantity::Nx, Quantity::Ny, Quantity::Nz, Quantity::S, Quantity::T]
+                .map(|q| wheels.real(0, q, 0.7));
+        assert_eq!(values, [0.0, 0.7, 0.0, 0.0, 1.0, 0.0, 0.0], "({x}, {y})");
+        assert_eq!((wheels.integer(0, Quantity::Road), wheels.integer(0, Quantity::Lane)), (-1, 0));
+    }
+    let crg = Ground::load_crg(&demo("demo_road.crg"), Compat::default()).unwrap();
+    let mut wheels =
+        Wheels::new(&crg, 1, (0.0, 0.0), &[(opencrg_core::settings::opt::BORDER_MODE_U, opencrg_core::Value::Int(0))])
+            .unwrap();
+    wheels.set(0, Quantity::X, -50.0);
+    assert!(!wheels.on_road(0));
+    assert_eq!(wheels.real(0, Quantity::Z, 1.0), 0.0, "refused beyond the border with border mode none");
+    assert_eq!(wheels.real(0, Quantity::Friction, 0.8), 0.8);
+}
