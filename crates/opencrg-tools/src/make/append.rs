@@ -45,10 +45,16 @@ pub fn append(first: &Road, second: &Arc<Road>, budget: &Budget) -> Result<Road>
 }
 
 /// `b` continuing `a` (both with the same u increment and long sections): `b`'s first step
-/// in the direction of `a`'s last.
+/// turned from `a`'s last by the mean of the turns beside the joint (`a`'s last and `b`'s
+/// first), so that the curvature runs on across it (a road cut in two and joined again
+/// is the road it was).
 fn joined(a: Draft, b: Draft) -> Draft {
     let (na, nb) = (a.nu(), b.nu());
-    let turn = a.phi[na - 1] - b.phi[1];
+    let step_turn = |phi: &[f64], i: usize| phi.get(i + 1).zip(phi.get(i)).map(|(p, q)| p - q);
+    let beside = [na.checked_sub(2).and_then(|i| step_turn(&a.phi, i)), step_turn(&b.phi, 1)];
+    let known: Vec<f64> = beside.into_iter().flatten().collect();
+    let across = if known.is_empty() { 0.0 } else { known.iter().sum::<f64>() / known.len() as f64 };
+    let turn = a.phi[na - 1] + across - b.phi[1];
     let mut phi = a.phi.clone();
     phi.extend(b.phi[1..].iter().map(|p| p + turn));
     let both = |x: &Option<Vec<f64>>, y: &Option<Vec<f64>>| -> Option<Vec<f64>> {
