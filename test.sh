@@ -10,7 +10,9 @@
 # profiles (.so and .a) and the differential tester; the same C tests and conformance
 # suite on Windows (MinGW-w64 build under wine, with the zip's CMake package and MSVC
 # import library) and from the Linux archives (glibc 2.17, zig; the aarch64 one under
-# qemu), with CMake and pkg-config consumers; the .glb export against the Khronos
+# qemu), with CMake and pkg-config consumers, and each platform's FMU binary through a C
+# host of the project's own; FMUs driven by FMPy (FMI 2 and 3, co-simulation and model
+# exchange) against the C API; the .glb export against the Khronos
 # glTF validator, the 3D view in headless Chromium; last the Python package: its
 # manylinux2014 wheel built with maturin and zig, installed into a fresh virtual
 # environment without cargo, and its pytest suite (pickling, multiprocessing, Dask); the
@@ -46,8 +48,8 @@ cargo "+$msrv" check -q --workspace --all-targets --locked --target-dir target/m
 # packaged crate into CARGO_HOME once per version and reuses what it built from it, so
 # the copies and builds an earlier run of the same version left go first.
 find "${CARGO_HOME:-$HOME/.cargo}/registry/src" -mindepth 2 -maxdepth 2 -path '*/-*/opencrg-*' -exec rm -rf {} +
-cargo clean -q -p opencrg-core -p opencrg-odr -p opencrg-tools -p opencrg-sys -p opencrg-cli
-cargo package -q --locked --allow-dirty -p opencrg-core -p opencrg-odr -p opencrg-tools -p opencrg-sys -p opencrg-cli
+cargo clean -q -p opencrg-core -p opencrg-odr -p opencrg-fmu -p opencrg-tools -p opencrg-sys -p opencrg-cli
+cargo package -q --locked --allow-dirty -p opencrg-core -p opencrg-odr -p opencrg-fmu -p opencrg-tools -p opencrg-sys -p opencrg-cli
 step "fuzzing"
 # Every fuzz target for 15 s from its seeds (stable toolchain, under 4 GB of address space).
 fuzz/run.sh 15
@@ -67,7 +69,7 @@ cc -O2 -I target/crgref/up crates/opencrg-odr/tests/oracle/crg_reference_answers
 OPENCRG_CRG_REFERENCE="$PWD/target/crgref/answers" \
     cargo test --release -p opencrg-odr --test crg_reference -- --include-ignored --nocapture
 step "C tests"
-cargo build --release -p opencrg-capi -p opencrg-cli
+cargo build --release -p opencrg-capi -p opencrg-cli -p opencrg-fmi
 # The instructions of the hot calls (path, u/v, map wheel, loading) against the baseline
 # kept in c-tests/instructions: a change that adds work to one fails here.
 c-tests/instructions/run.sh
@@ -77,6 +79,17 @@ ctest --test-dir build --output-on-failure -j"$(nproc)"
 c-tests/cross/run.sh windows
 c-tests/cross/run.sh arm
 c-tests/cross/run.sh linux
+step "FMU"
+# The FMUs as users drive them: FMPy (from PyPI) validates and simulates FMUs of a CRG
+# file and of shared maps with CRG records in every mode, FMI 2 and 3, co-simulation and
+# model exchange, against the C API and `opencrg odr eval` to the bit (the C host of
+# c-tests/fmu drove each platform's binary in the cross runs above).
+rm -rf target/fmu-venv
+python3 -m venv target/fmu-venv
+target/fmu-venv/bin/pip install -q --upgrade pip
+target/fmu-venv/bin/pip install -q "fmpy>=0.3.20,<0.4" numpy pytest
+OPENCRG_CLI="$PWD/target/release/opencrg" OPENCRG_LIB="$PWD/target/release/libopencrg.so" \
+    target/fmu-venv/bin/python -m pytest -q -p no:cacheprovider crates/opencrg-fmi/tests/fmpy
 step "glTF and views"
 # The .glb export of the demo road (curved, sloped, banked), whole, a part and simplified,
 # and of the demo map (the demo road laid on a road of an OpenDRIVE map), against the
@@ -127,8 +140,14 @@ python3 -m venv target/python-build
 target/python-build/bin/pip install -q --upgrade pip
 target/python-build/bin/pip install -q "maturin[zig]>=1.7,<2"
 rm -f target/wheels/opencrg-*.whl
+# The wheel carries the FMU binary of the Linux archive (glibc 2.17) for write_fmu.
+fmu_binaries=crates/opencrg-python/python/opencrg/fmu
+rm -rf "$fmu_binaries"
+mkdir -p "$fmu_binaries/x86_64-linux"
+cp "target/dist/opencrg-$version-linux-x86_64/lib/opencrg/fmu/x86_64-linux/libopencrg_fmi.so" "$fmu_binaries/x86_64-linux/"
 # (maturin finds zig through the `python` first on PATH: the build environment's.)
 env PATH="$PWD/target/python-build/bin:$PATH" maturin build -q --release --zig -m crates/opencrg-python/Cargo.toml --out target/wheels
+rm -rf "$fmu_binaries"
 wheel=$(ls target/wheels/opencrg-*-cp39-abi3-*manylinux_2_17_x86_64*.whl)
 # Installed into a fresh environment where cargo cannot be found, and tested there.
 rm -rf target/python-venv
@@ -136,7 +155,7 @@ python3 -m venv target/python-venv
 no_cargo=$(printf '%s' "$PATH" | tr ':' '\n' | grep -v -e cargo -e rustup | paste -sd: -)
 env PATH="$no_cargo" sh -c '! command -v cargo >/dev/null'
 env PATH="$no_cargo" target/python-venv/bin/pip install -q --upgrade pip
-env PATH="$no_cargo" target/python-venv/bin/pip install -q numpy pytest "dask[distributed]" pyproj matplotlib "$wheel"
+env PATH="$no_cargo" target/python-venv/bin/pip install -q numpy pytest "dask[distributed]" pyproj matplotlib fmpy "$wheel"
 env PATH="$no_cargo" OPENCRG_CLI="$PWD/target/release/opencrg" target/python-venv/bin/python -m pytest -q -p no:logging crates/opencrg-python/tests
 step "Python sdist"
 # The source distribution as PyPI would serve it: installed into a fresh environment that
@@ -146,7 +165,9 @@ target/python-build/bin/maturin sdist -m crates/opencrg-python/Cargo.toml --out 
 rm -rf target/python-sdist-venv
 python3 -m venv target/python-sdist-venv
 target/python-sdist-venv/bin/pip install -q --upgrade pip
-target/python-sdist-venv/bin/pip install -q numpy pytest "dask[distributed]" pyproj matplotlib
+target/python-sdist-venv/bin/pip install -q numpy pytest "dask[distributed]" pyproj matplotlib fmpy
 target/python-sdist-venv/bin/pip install -q --config-settings=build-args="--profile=dev" target/sdist/opencrg-*.tar.gz
-OPENCRG_CLI="$PWD/target/release/opencrg" target/python-sdist-venv/bin/python -m pytest -q -p no:logging crates/opencrg-python/tests
+# (A package built from source carries no FMU binary: write_fmu takes the archive's.)
+OPENCRG_CLI="$PWD/target/release/opencrg" OPENCRG_FMU_BINARIES="$PWD/target/dist/opencrg-$version-linux-x86_64/lib/opencrg/fmu" \
+    target/python-sdist-venv/bin/python -m pytest -q -p no:logging crates/opencrg-python/tests
 step "done"

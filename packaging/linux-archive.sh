@@ -5,7 +5,8 @@
 #     lib/libopencrg.so.VERSION, .so.MAJOR, .so (and libOpenCRG.so/.a, the reference
 #     library's link names), lib/libopencrg.a, include/ (the three headers),
 #     lib/cmake/OpenCRG (find_package) and lib/pkgconfig/opencrg.pc, both relocatable,
-#     bin/opencrg, LICENSE
+#     bin/opencrg, lib/opencrg/fmu/ARCH-linux/libopencrg_fmi.so (the binary `opencrg fmu`
+#     packs into FMUs), LICENSE
 # and checks that no file asks for a glibc symbol newer than GLIBC_2.17.
 #   packaging/linux-archive.sh x86_64|aarch64
 # Needs: cmake; pip (cargo-zigbuild and zig are installed into target/zig-build);
@@ -27,7 +28,7 @@ if [ ! -x target/zig-build/bin/cargo-zigbuild ]; then
 fi
 # (cargo-zigbuild finds zig through the `python` first on PATH: the build environment's.)
 env PATH="$PWD/target/zig-build/bin:$PATH" cargo zigbuild -q --release --target "$arch-unknown-linux-gnu.$glibc" \
-    -p opencrg-capi -p opencrg-cli
+    -p opencrg-capi -p opencrg-cli -p opencrg-fmi
 built="$PWD/target/$arch-unknown-linux-gnu/release"
 name="opencrg-$version-linux-$arch"
 stage="$PWD/target/dist/$name"
@@ -36,9 +37,11 @@ cmake -S . -B "target/dist/$name-cmake" -DOPENCRG_PREBUILT_DIR="$built" -DBUILD_
     -DCMAKE_INSTALL_LIBDIR=lib >/dev/null
 cmake --install "target/dist/$name-cmake" --prefix "$stage" >/dev/null
 cp LICENSE "$stage/"
+mkdir -p "$stage/lib/opencrg/fmu/$arch-linux"
+cp "$built/libopencrg_fmi.so" "$stage/lib/opencrg/fmu/$arch-linux/"
 
-# Nothing newer than glibc 2.17 asked for, by the library or the command.
-for file in "$stage/lib/libopencrg.so.$version" "$stage/bin/opencrg"; do
+# Nothing newer than glibc 2.17 asked for, by the library, the command or the FMU binary.
+for file in "$stage/lib/libopencrg.so.$version" "$stage/bin/opencrg" "$stage/lib/opencrg/fmu/$arch-linux/libopencrg_fmi.so"; do
     newest=$("$objdump" -T "$file" | grep -oE 'GLIBC_[0-9]+(\.[0-9]+)+' | sed 's/GLIBC_//' | sort -uV | tail -1)
     if [ -z "$newest" ] || [ "$(printf '%s\n%s\n' "$newest" "$glibc" | sort -V | tail -1)" != "$glibc" ]; then
         echo "linux-archive: $file needs glibc ${newest:-(none found)}, more than $glibc" >&2

@@ -6,6 +6,7 @@
 #   opencrg-VERSION-linux-x86_64.tar.gz                       the C library and the command
 #   opencrg-VERSION-linux-aarch64.tar.gz                      (glibc 2.17 and later, zig)
 #   opencrg-VERSION-windows-x86_64.zip                        the C library and the command
+# (each archive with the FMU binaries of all three platforms, each wheel with its own's)
 # and tests them: the aarch64 wheel under qemu with Debian's aarch64 Python
 # (packaging/test-wheel-aarch64.sh); the Linux archives by c-tests/cross/run.sh linux and
 # arm (which build them), the x86-64 wheel and the source distribution by test.sh, the
@@ -23,17 +24,38 @@ target/release-build/bin/pip install -q --upgrade pip
 target/release-build/bin/pip install -q "maturin[zig]>=1.7,<2"
 export PATH="$PWD/target/release-build/bin:$PATH"
 rm -f "$out"/opencrg-*
-for target in x86_64-unknown-linux-gnu aarch64-unknown-linux-gnu; do
-    maturin build -q --release --zig --target "$target" -m crates/opencrg-python/Cargo.toml --out "$out"
-done
-maturin sdist -m crates/opencrg-python/Cargo.toml --out "$out" >/dev/null
+# The native command first: the cross runs pack FMUs with it.
+cargo build -q --release -p opencrg-cli
+# The archives, each tested on its platform (building them builds their FMU binaries).
 packaging/windows-zip.sh >/dev/null
-cp "target/dist/opencrg-$version-windows-x86_64.zip" "$out/"
 for platform in linux arm; do
     c-tests/cross/run.sh $platform | tail -1
 done
-cp "target/dist/opencrg-$version-linux-x86_64.tar.gz" "target/dist/opencrg-$version-linux-aarch64.tar.gz" "$out/"
-cargo build -q --release -p opencrg-cli
+# Every archive carries the FMU binaries of all three platforms, so that its `opencrg fmu`
+# writes FMUs for all of them.
+trees=("opencrg-$version-linux-x86_64" "opencrg-$version-linux-aarch64" "opencrg-$version-windows-x86_64")
+for tree in "${trees[@]}"; do
+    for other in "${trees[@]}"; do
+        cp -r "target/dist/$other/lib/opencrg/fmu/." "target/dist/$tree/lib/opencrg/fmu/"
+    done
+done
+for tree in "${trees[@]:0:2}"; do
+    tar -C target/dist -czf "target/dist/$tree.tar.gz" "$tree"
+    cp "target/dist/$tree.tar.gz" "$out/"
+done
+rm -f "target/dist/${trees[2]}.zip"
+(cd target/dist && python3 -m zipfile -c "${trees[2]}.zip" "${trees[2]}")
+cp "target/dist/${trees[2]}.zip" "$out/"
+# The wheels, each with its platform's FMU binary (for write_fmu); the sdist with none.
+fmu_binaries=crates/opencrg-python/python/opencrg/fmu
+for arch in x86_64 aarch64; do
+    rm -rf "$fmu_binaries"
+    mkdir -p "$fmu_binaries"
+    cp -r "target/dist/opencrg-$version-linux-$arch/lib/opencrg/fmu/$arch-linux" "$fmu_binaries/"
+    maturin build -q --release --zig --target "$arch-unknown-linux-gnu" -m crates/opencrg-python/Cargo.toml --out "$out"
+done
+rm -rf "$fmu_binaries"
+maturin sdist -m crates/opencrg-python/Cargo.toml --out "$out" >/dev/null
 packaging/test-wheel-aarch64.sh "$(ls "$out"/opencrg-"$version"-cp39-abi3-*aarch64*.whl)"
 (cd "$out" && sha256sum opencrg-* >SHA256SUMS)
 ls -l "$out"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the library and the command for 64-bit Windows with MinGW-w64 and packs them
-# with the header, the import libraries for MinGW and MSVC and a CMake package:
+# with the header, the import libraries for MinGW and MSVC, a CMake package and the binary
+# `opencrg fmu` packs into FMUs (lib/opencrg/fmu/x86_64-windows/opencrg_fmi.dll):
 #   target/dist/opencrg-VERSION-windows-x86_64.zip   (and the same tree beside it)
 # Needs: rustup target add x86_64-pc-windows-gnu; Debian's gcc-mingw-w64-x86-64 (and
 # cmake, for the package's version file).
@@ -8,7 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 target=x86_64-pc-windows-gnu
 version=$(sed -n 's/^version = "\([0-9.]*\)"$/\1/p' Cargo.toml | head -1)
-cargo build --release --target "$target" -p opencrg-capi -p opencrg-cli
+cargo build --release --target "$target" -p opencrg-capi -p opencrg-cli -p opencrg-fmi
 built="target/$target/release"
 name="opencrg-$version-windows-x86_64"
 stage="target/dist/$name"
@@ -20,6 +21,8 @@ cp include/crgBaseLib.h include/crgBaseLibPrivate.h include/crgOdr.h "$stage/inc
 cp packaging/windows/OpenCRGConfig.cmake "$stage/lib/cmake/OpenCRG/"
 cmake -DVERSION="$version" -DCMAKE_SIZEOF_VOID_P=8 -DOUT="$stage/lib/cmake/OpenCRG/OpenCRGConfigVersion.cmake" \
     -P packaging/windows/version.cmake
+mkdir -p "$stage/lib/opencrg/fmu/x86_64-windows"
+cp "$built/opencrg_fmi.dll" "$stage/lib/opencrg/fmu/x86_64-windows/"
 cp LICENSE "$stage/"
 (cd target/dist && python3 -m zipfile -c "$name.zip" "$name")
 echo "$stage.zip"

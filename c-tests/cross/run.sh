@@ -9,8 +9,9 @@
 # Checks: the exported functions against the header; the C tests (API with the shared
 # and the static library, threads, extensions, private header, compatibility profile,
 # messages on stderr); the conformance suite in both behaviour profiles (../shared);
-# the command's `info` on the project's demo road; for Windows also the zip's CMake
-# package with MinGW and the MSVC import library with lld-link.
+# the command's `info` on the project's demo road; the FMU binary through a small FMI
+# host (c-tests/fmu); for Windows also the zip's CMake package with MinGW and the MSVC
+# import library with lld-link.
 set -euo pipefail
 # Nothing here reads its input; an emulated program that would waits for nothing.
 exec </dev/null
@@ -211,4 +212,21 @@ if [ "$platform" = windows ]; then
     (cd "$work/msvc" && "${run[@]}" ./msvc_link.exe) || { echo "cross windows: msvc_link exited with $?" >&2; exit 1; }
     ok "opencrg.lib linked by lld-link (MSVC's format), the program runs"
 fi
+# The archive's FMU binary: FMUs of the demo road and the demo map packed with it by the
+# native command, unpacked, driven by fmu_host (a small FMI host of the project's own)
+# against the native command's answers, to the bit.
+native="$root/target/release/opencrg"
+[ -x "$native" ] || { echo "cross $platform: $native not built (cargo build --release -p opencrg-cli)" >&2; exit 1; }
+c-tests/fmu/expected.sh "$native" "$tree/lib/opencrg/fmu" "$work/fmu"
+case "$platform" in
+windows) fmu_folder=win64 fmu_ext=dll host_libs=() ;;
+arm) fmu_folder=aarch64-linux fmu_ext=so host_libs=(-ldl) ;;
+linux) fmu_folder=linux64 fmu_ext=so host_libs=(-ldl) ;;
+esac
+"$cc" "${strict[@]}" -Ic-tests/fmu c-tests/fmu/fmu_host.c "${link_threads[@]}" "${host_libs[@]}" -lm -o "$work/fmu_host$exe"
+"${run[@]}" "$work/fmu_host$exe" "$work/fmu/demo_road/binaries/$fmu_folder/demo_road.$fmu_ext" \
+    "$work/fmu/demo_road" "$work/fmu/demo_road.points" "$work/fmu/demo_map" "$work/fmu/demo_map.points" \
+    >"$work/fmu.log" 2>&1 || { cat "$work/fmu.log"; exit 1; }
+ok "FMU binary: $(tail -1 "$work/fmu.log")"
+
 echo "cross $platform: $passed checks passed"

@@ -67,7 +67,7 @@ pub unsafe extern "C" fn fmi2Instantiate(
     _visible: Boolean,
     logging_on: Boolean,
 ) -> Component {
-    let name = this_export!();
+    let name = this_export!()();
     guarded(std::ptr::null_mut(), || {
         // SAFETY: the caller's promise.
         let (instance_name, guid, location) = unsafe { (text(instance_name), text(guid), text(resource_location)) };
@@ -242,15 +242,7 @@ pub unsafe extern "C" fn fmi2Reset(c: Component) -> Status {
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetReal(c: Component, vr: *const Vr, nvr: usize, value: *mut f64) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            let (vr, value) = (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?);
-            for (&r, v) in vr.iter().zip(value) {
-                *v = i.real(r)?;
-            }
-            Ok(())
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.reals(slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?)) }
 }
 
 /// Reads Integer variables (a map's road and lane, integer options).
@@ -315,15 +307,7 @@ pub unsafe extern "C" fn fmi2GetString(c: Component, vr: *const Vr, nvr: usize, 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetReal(c: Component, vr: *const Vr, nvr: usize, value: *const f64) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            let (vr, value) = (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?);
-            for (&r, &v) in vr.iter().zip(value) {
-                i.set_real(r, v)?;
-            }
-            Ok(())
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.set_reals(slice(vr, nvr, "vr")?, slice(value, nvr, "value")?)) }
 }
 
 /// Sets Integer variables (integer options).

@@ -78,7 +78,7 @@ pub unsafe extern "C" fn fmi3InstantiateModelExchange(
     log: Option<Fmi3Logger>,
 ) -> Inst {
     // SAFETY: the caller's promise.
-    unsafe { instantiate(this_export!(), Interface::ModelExchange, token, resource_path, logging_on, env, log) }
+    unsafe { instantiate(this_export!()(), Interface::ModelExchange, token, resource_path, logging_on, env, log) }
 }
 
 /// Makes a co-simulation instance (event mode and early return are not used).
@@ -101,7 +101,7 @@ pub unsafe extern "C" fn fmi3InstantiateCoSimulation(
     _intermediate_update: *mut c_void,
 ) -> Inst {
     // SAFETY: the caller's promise.
-    unsafe { instantiate(this_export!(), Interface::CoSimulation, token, resource_path, logging_on, env, log) }
+    unsafe { instantiate(this_export!()(), Interface::CoSimulation, token, resource_path, logging_on, env, log) }
 }
 
 /// Not supported: scheduled execution (null, said through `log`).
@@ -121,7 +121,7 @@ pub unsafe extern "C" fn fmi3InstantiateScheduledExecution(
     _lock_preemption: *mut c_void,
     _unlock_preemption: *mut c_void,
 ) -> Inst {
-    let name = this_export!();
+    let name = this_export!()();
     guarded(std::ptr::null_mut(), || {
         if let Some(log) = log {
             let message = format!("{name}: scheduled execution is not supported (the model description says so)");
@@ -282,11 +282,7 @@ pub unsafe extern "C" fn fmi3GetFloat64(
     unsafe {
         on_instance(this_export!(), c, |i| {
             same_length(nvr, n_values)?;
-            let (vr, values) = (slice(vr, nvr, "valueReferences")?, slice_mut(values, nvr, "values")?);
-            for (&r, v) in vr.iter().zip(values) {
-                *v = i.real(r)?;
-            }
-            Ok(())
+            i.reals(slice(vr, nvr, "valueReferences")?, slice_mut(values, nvr, "values")?)
         })
     }
 }
@@ -308,11 +304,7 @@ pub unsafe extern "C" fn fmi3SetFloat64(
     unsafe {
         on_instance(this_export!(), c, |i| {
             same_length(nvr, n_values)?;
-            let (vr, values) = (slice(vr, nvr, "valueReferences")?, slice(values, nvr, "values")?);
-            for (&r, &v) in vr.iter().zip(values) {
-                i.set_real(r, v)?;
-            }
-            Ok(())
+            i.set_reals(slice(vr, nvr, "valueReferences")?, slice(values, nvr, "values")?)
         })
     }
 }

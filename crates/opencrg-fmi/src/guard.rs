@@ -8,11 +8,15 @@ use crate::log::Status;
 use std::ffi::{c_char, c_void, CStr};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-/// The name of the export this appears in, written nowhere but in its signature.
+/// The name of the export this appears in, written nowhere but in its signature: a
+/// function that reads it (only when a message needs it, off the hot path).
 macro_rules! this_export {
     () => {{
-        fn here() {}
-        $crate::guard::export_in(::std::any::type_name_of_val(&here))
+        fn name() -> &'static str {
+            fn here() {}
+            $crate::guard::export_in(::std::any::type_name_of_val(&here))
+        }
+        name as fn() -> &'static str
     }};
 }
 pub(crate) use this_export;
@@ -28,8 +32,9 @@ pub(crate) fn export_in(path: &'static str) -> &'static str {
 /// # Safety
 /// `instance` is null or an instance this library made and has not freed, used by no
 /// other thread during the call.
+#[inline(always)]
 pub(crate) unsafe fn on_instance(
-    name: &str,
+    name: fn() -> &'static str,
     instance: *mut c_void,
     body: impl FnOnce(&mut Instance) -> Result<(), Refused>,
 ) -> Status {
@@ -50,7 +55,7 @@ pub(crate) unsafe fn on_instance(
     };
     // SAFETY: as above; the logger is copied out so that no borrow lives while it runs.
     let logger = unsafe { (*instance).logger().clone() };
-    logger.say(status, &format!("{name}: {message}"));
+    logger.say(status, &format!("{}: {message}", name()));
     status
 }
 
@@ -63,6 +68,7 @@ pub(crate) fn guarded<T>(on_panic: T, body: impl FnOnce() -> T) -> T {
 ///
 /// # Safety
 /// `p` is null or points to `n` readable values that outlive the call.
+#[inline(always)]
 pub(crate) unsafe fn slice<'a, T>(p: *const T, n: usize, what: &str) -> Result<&'a [T], Refused> {
     if n == 0 {
         return Ok(&[]);
@@ -78,6 +84,7 @@ pub(crate) unsafe fn slice<'a, T>(p: *const T, n: usize, what: &str) -> Result<&
 ///
 /// # Safety
 /// `p` is null or points to `n` writable values, not otherwise referenced during the call.
+#[inline(always)]
 pub(crate) unsafe fn slice_mut<'a, T>(p: *mut T, n: usize, what: &str) -> Result<&'a mut [T], Refused> {
     if n == 0 {
         return Ok(&mut []);
@@ -113,7 +120,7 @@ mod tests {
     fn the_export_is_named() {
         #[allow(non_snake_case)]
         fn fmi2GetReal_like() -> &'static str {
-            this_export!()
+            this_export!()()
         }
         assert_eq!(fmi2GetReal_like(), "fmi2GetReal_like");
     }

@@ -79,6 +79,8 @@ pub struct Instance {
     fmu: Fmu,
     kind: Kind,
     wheel_count: u32,
+    /// Bit k set: quantity k of a wheel is a Real variable of this FMU.
+    reals: u128,
     wheels: Wheels,
     interface: Interface,
     fmi: Fmi,
@@ -127,10 +129,14 @@ impl Instance {
         };
         let wheels = fmu.wheels(&[]).map_err(|e| e.to_string())?;
         let wheel_count = fmu.config.wheels;
+        let reals = (0..variables::WHEEL_STRIDE)
+            .filter(|&k| Quantity::from_offset(k).is_some_and(|q| q.of(kind) && q.ty() == Type::Real))
+            .fold(0u128, |mask, k| mask | 1 << k);
         Ok(Instance {
             fmu,
             kind,
             wheel_count,
+            reals,
             wheels,
             interface,
             fmi,
@@ -212,19 +218,37 @@ impl Instance {
         self.time
     }
 
-    /// A Real variable.
-    #[inline]
-    pub fn real(&mut self, vr: u32) -> Result<f64, Refused> {
-        if let Some((wheel, q)) = variables::wheel_of(self.kind, self.wheel_count, vr) {
-            if q.ty() == Type::Real {
-                if !matches!(self.state, State::Initialization | State::Event | State::ContinuousTime | State::Step) {
-                    self.may(Act::Get, &self.name_of(vr))?;
-                }
-                return Ok(self.wheels.real(wheel as usize - 1, q, self.parameters.friction_default));
-            }
-            return Err(self.not_a(vr, "Real"));
+    /// The wheel (0-based) and quantity of a Real output or input `vr` names, if it
+    /// names one of this FMU: the hot path, a division and a mask.
+    #[inline(always)]
+    fn wheel_real(&self, vr: u32) -> Option<(usize, Quantity)> {
+        let (wheel, k) = (vr / variables::WHEEL_STRIDE, vr % variables::WHEEL_STRIDE);
+        let known = wheel.wrapping_sub(1) < self.wheel_count && (self.reals >> k) & 1 == 1;
+        known.then(|| (wheel as usize - 1, Quantity::from_offset(k).unwrap_or(Quantity::X)))
+    }
+
+    /// Real variables into `out`: a wheel's input or output (computed where the wheel
+    /// moved since), the time, a real parameter.
+    #[inline(always)]
+    pub fn reals(&mut self, vrs: &[u32], out: &mut [f64]) -> Result<(), Refused> {
+        let readable = matches!(self.state, State::Initialization | State::Event | State::ContinuousTime | State::Step);
+        for (&vr, value) in vrs.iter().zip(out) {
+            *value = match self.wheel_real(vr) {
+                Some((i, q)) if readable => self.wheels.real(i, q, self.parameters.friction_default),
+                _ => self.real_otherwise(vr)?,
+            };
         }
+        Ok(())
+    }
+
+    /// [`Instance::reals`] off the hot path: parameters, the time, refusals.
+    #[cold]
+    #[inline(never)]
+    fn real_otherwise(&mut self, vr: u32) -> Result<f64, Refused> {
         self.may(Act::Get, &self.name_of(vr))?;
+        if let Some((i, q)) = self.wheel_real(vr) {
+            return Ok(self.wheels.real(i, q, self.parameters.friction_default));
+        }
         match Parameter::from_vr(self.kind, vr) {
             Some(Parameter::FrictionDefault) => Ok(self.parameters.friction_default),
             Some(Parameter::Option(id)) => match self.option(id) {
@@ -236,16 +260,29 @@ impl Instance {
         }
     }
 
-    /// Sets a Real variable.
-    #[inline]
-    pub fn set_real(&mut self, vr: u32, value: f64) -> Result<(), Refused> {
-        if let Some((wheel, q)) = variables::wheel_of(self.kind, self.wheel_count, vr) {
-            if q.is_input() {
-                if self.state == State::Terminated || self.state == State::Broken {
-                    self.may(Act::SetInput, &self.name_of(vr))?;
-                }
+    /// Sets Real variables: the wheels' x and y, the friction default, real options.
+    #[inline(always)]
+    pub fn set_reals(&mut self, vrs: &[u32], values: &[f64]) -> Result<(), Refused> {
+        let settable = !matches!(self.state, State::Terminated | State::Broken);
+        for (&vr, &value) in vrs.iter().zip(values) {
+            let (wheel, k) = (vr / variables::WHEEL_STRIDE, vr % variables::WHEEL_STRIDE);
+            if wheel.wrapping_sub(1) < self.wheel_count && k <= Quantity::Y as u32 && settable {
+                let q = if k == Quantity::X as u32 { Quantity::X } else { Quantity::Y };
                 self.wheels.set(wheel as usize - 1, q, value);
-                return Ok(());
+            } else {
+                self.set_real_otherwise(vr, value)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// [`Instance::set_reals`] off the hot path: parameters, refusals.
+    #[cold]
+    #[inline(never)]
+    fn set_real_otherwise(&mut self, vr: u32, value: f64) -> Result<(), Refused> {
+        if let Some((_, q)) = variables::wheel_of(self.kind, self.wheel_count, vr) {
+            if q.is_input() {
+                return self.may(Act::SetInput, &self.name_of(vr));
             }
             return Err(error(format!("{} is an output: it cannot be set", self.name_of(vr))));
         }

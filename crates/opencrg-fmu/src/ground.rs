@@ -193,7 +193,7 @@ impl Wheels {
 
     /// Moves wheel `i` (0-based): sets its x or y (other quantities are not inputs and
     /// are ignored).
-    #[inline]
+    #[inline(always)]
     pub fn set(&mut self, i: usize, quantity: Quantity, value: f64) {
         let wheel = &mut self.wheels[i];
         let slot = match quantity {
@@ -210,7 +210,7 @@ impl Wheels {
 
     /// A Real quantity of wheel `i` (0-based): its input, or its answer, computed if the
     /// wheel moved; `friction_default` where the road gives no friction.
-    #[inline]
+    #[inline(always)]
     pub fn real(&mut self, i: usize, quantity: Quantity, friction_default: f64) -> f64 {
         let ranges = self.ranges;
         let wheel = &mut self.wheels[i];
@@ -220,27 +220,10 @@ impl Wheels {
             _ => {}
         }
         wheel.base(ranges);
-        let a = wheel.answer;
-        match quantity {
-            Quantity::Z => a.z,
-            Quantity::Friction if a.on_road && a.friction.is_finite() => a.friction,
-            Quantity::Friction => friction_default,
-            Quantity::U | Quantity::V | Quantity::S | Quantity::T => {
-                let value = if matches!(quantity, Quantity::U | Quantity::S) { a.a } else { a.b };
-                if a.located {
-                    value
-                } else {
-                    0.0
-                }
-            }
-            Quantity::Nx | Quantity::Ny | Quantity::Nz => {
-                let n = wheel.normal();
-                n[quantity as usize - Quantity::Nx as usize]
-            }
-            Quantity::Heading => wheel.pk().0,
-            Quantity::Curvature => wheel.pk().1,
-            _ => 0.0,
+        if quantity == Quantity::Z {
+            return wheel.answer.z;
         }
+        wheel.other(quantity, friction_default)
     }
 
     /// An Integer quantity of wheel `i` (0-based): a map's road and lane.
@@ -310,6 +293,28 @@ impl Wheel {
             }
         }
         self.answer = answer;
+    }
+
+    /// A Real quantity other than the height (the base answer known).
+    #[inline(never)]
+    fn other(&mut self, quantity: Quantity, friction_default: f64) -> f64 {
+        let a = &self.answer;
+        match quantity {
+            Quantity::Friction if a.on_road && a.friction.is_finite() => a.friction,
+            Quantity::Friction => friction_default,
+            Quantity::U | Quantity::V | Quantity::S | Quantity::T => {
+                let value = if matches!(quantity, Quantity::U | Quantity::S) { a.a } else { a.b };
+                if a.located {
+                    value
+                } else {
+                    0.0
+                }
+            }
+            Quantity::Nx | Quantity::Ny | Quantity::Nz => self.normal()[quantity as usize - Quantity::Nx as usize],
+            Quantity::Heading => self.pk().0,
+            Quantity::Curvature => self.pk().1,
+            _ => 0.0,
+        }
     }
 
     /// The upward unit normal (the base answer known); up where none is known.

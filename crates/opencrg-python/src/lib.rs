@@ -12,6 +12,7 @@
 //! - `tools`: new roads from roads (cut, flip, append, resample, filter, slope, banking)
 //!   and from points (generate, import_points), point files, comparisons;
 //! - `odr`: `opencrg.odr`, OpenDRIVE maps with CRG surfaces;
+//! - `fmu`: `write_fmu`, a road or a map packed as an FMU;
 //! - `errors`: the core's errors as Python exceptions.
 
 use pyo3::prelude::*;
@@ -20,6 +21,7 @@ mod arrays;
 mod contact;
 mod errors;
 mod evaluation;
+mod fmu;
 mod georef;
 mod names;
 mod odr;
@@ -44,6 +46,7 @@ fn opencrg_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(tools::import_points, m)?)?;
     m.add_function(wrap_pyfunction!(tools::read_points, m)?)?;
     m.add_function(wrap_pyfunction!(tools::compare, m)?)?;
+    m.add_function(wrap_pyfunction!(fmu::write_fmu, m)?)?;
     errors::register(m)?;
     names::register(m)?;
     odr::register(m)?;

@@ -119,3 +119,23 @@ def test_a_cloud_with_stray_points_is_imported_cropped():
     road = opencrg.import_points(stray, 1.0, 1.0, crop=((-10.0, 70.0), (-10.0, 10.0)))
     plain = opencrg.import_points(points, 1.0, 1.0)
     assert np.asarray(road.grid).shape == np.asarray(plain.grid).shape
+
+
+def test_write_fmu_packs_what_the_command_packs(tmp_path, road_file, opencrg_command):
+    import zipfile
+
+    report = opencrg.write_fmu(road_file, tmp_path / "py.fmu", wheels=2, fmi=3)
+    assert report["identifier"] == "curved" and report["variables"] == 1 + 10 + 2 * 12, report
+    assert "x86_64-linux" in report["platforms"], report
+    run(opencrg_command, "fmu", road_file, tmp_path / "cli.fmu", "--wheels", 2, "--fmi", 3)
+    with zipfile.ZipFile(tmp_path / "py.fmu") as py, zipfile.ZipFile(tmp_path / "cli.fmu") as cli:
+        names = [n for n in py.namelist() if not n.startswith("binaries/")]
+        assert names == [n for n in cli.namelist() if not n.startswith("binaries/")]
+        for name in names:
+            assert py.read(name) == cli.read(name), name
+        assert "binaries/x86_64-linux/curved.so" in py.namelist()
+    with pytest.raises(opencrg.RequestError, match="fmi=4"):
+        opencrg.write_fmu(road_file, tmp_path / "bad.fmu", fmi=4)
+    with pytest.raises(opencrg.RequestError, match="no FMU binary"):
+        opencrg.write_fmu(road_file, tmp_path / "bad.fmu", binaries=tmp_path)
+    assert not (tmp_path / "bad.fmu").exists()

@@ -256,6 +256,19 @@ def read_points(path: _Path) -> _Floats:
 def compare(a: Road, b: Road) -> dict[str, object]:
     """b's surface against a's at a's grid nodes: max_difference, signed, at (u, v, x, y), rms, compared, only_in_a."""
 
+def write_fmu(
+    road: Union[str, PathLike[str]],
+    path: Union[str, PathLike[str]],
+    wheels: int = 4,
+    fmi: int = 2,
+    binaries: Optional[Union[str, PathLike[str]]] = None,
+) -> dict[str, object]:
+    """The road (a CRG file, or an OpenDRIVE map with its CRG files) packed as an FMU in
+    `path`: FMI 2.0 or 3.0, model exchange and co-simulation, answering height, normal
+    and friction under `wheels` wheels. FMU binaries from `binaries`, else
+    $OPENCRG_FMU_BINARIES, else the package's own (wheels carry the Linux x86-64 one).
+    Returns identifier, resources, platforms, variables."""
+
 class ContactPoint:
     """A point of evaluation: its own options and x/y search history.
 
