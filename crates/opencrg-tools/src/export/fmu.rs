@@ -132,10 +132,10 @@ fn refused(why: String) -> Error {
     Error::out_of_range(why)
 }
 
-/// The folder that holds all of `paths` (absolute, canonical).
-fn common_folder(paths: &[PathBuf]) -> PathBuf {
-    let mut common = paths[0].parent().map(Path::to_path_buf).unwrap_or_default();
-    for p in &paths[1..] {
+/// The folder that holds all of `folders` (absolute, canonical).
+fn common_folder(folders: &[PathBuf]) -> PathBuf {
+    let mut common = folders[0].clone();
+    for p in &folders[1..] {
         while !p.starts_with(&common) {
             if !common.pop() {
                 break;
@@ -143,6 +143,37 @@ fn common_folder(paths: &[PathBuf]) -> PathBuf {
         }
     }
     common
+}
+
+/// The highest folder the written part of a reference passes through on its way up
+/// (`../c/x.crg` from `a/b` passes through `a`), if it goes up at all: the layout in the
+/// FMU must have it, so that the path, as written, still leads to the file. `files` are
+/// the files as named (the CRG file and its references): the reference's own part is what
+/// follows the folder of the file it was written in.
+fn highest_on_the_way(reference: &Path, files: &[PathBuf]) -> Result<Option<PathBuf>> {
+    let written_in = files
+        .iter()
+        .filter(|f| f.as_path() != reference)
+        .filter_map(|f| f.parent())
+        .filter(|folder| reference.starts_with(folder))
+        .max_by_key(|folder| folder.components().count());
+    let Some(folder) = written_in else { return Ok(None) };
+    let rest = reference.strip_prefix(folder).unwrap_or(reference);
+    let mut at = canonical(if folder.as_os_str().is_empty() { Path::new(".") } else { folder })?;
+    let mut highest = None::<PathBuf>;
+    for part in rest.components() {
+        match part {
+            Component::ParentDir => {
+                at.pop();
+                if highest.as_ref().is_none_or(|h| at.components().count() < h.components().count()) {
+                    highest = Some(at.clone());
+                }
+            }
+            Component::Normal(name) => at.push(name),
+            _ => {}
+        }
+    }
+    Ok(highest)
 }
 
 /// `path` below `folder`, written with `/`.
@@ -170,13 +201,18 @@ fn crg_files(path: &Path, under: &str, entries: &mut Vec<Entry>) -> Result<Strin
     let road = opencrg_core::Road::load(path)?;
     let main = canonical(path)?;
     let mut all = vec![main.clone()];
+    let mut folders: Vec<PathBuf> = main.parent().map(Path::to_path_buf).into_iter().collect();
+    let named: Vec<PathBuf> =
+        std::iter::once(path.to_path_buf()).chain(road.header().references.iter().cloned()).collect();
     for reference in &road.header().references {
         let file = canonical(reference)?;
+        folders.extend(file.parent().map(Path::to_path_buf));
+        folders.extend(highest_on_the_way(reference, &named)?);
         if !all.contains(&file) {
             all.push(file);
         }
     }
-    let folder = common_folder(&all);
+    let folder = common_folder(&folders);
     let mut main_inside = String::new();
     for file in &all {
         let inside = format!("{under}/{}", inside_of(file, &folder)?);
@@ -396,10 +432,19 @@ mod tests {
 
     #[test]
     fn files_keep_their_places_to_each_other() {
-        let paths = [PathBuf::from("/a/b/c/x.crg"), PathBuf::from("/a/b/d/y.crg")];
-        let folder = common_folder(&paths);
+        let folders = [PathBuf::from("/a/b/c"), PathBuf::from("/a/b/d")];
+        let folder = common_folder(&folders);
         assert_eq!(folder, Path::new("/a/b"));
-        assert_eq!(inside_of(&paths[0], &folder).unwrap(), "c/x.crg");
-        assert_eq!(common_folder(&paths[..1]), Path::new("/a/b/c"));
+        assert_eq!(inside_of(Path::new("/a/b/c/x.crg"), &folder).unwrap(), "c/x.crg");
+        assert_eq!(common_folder(&folders[..1]), Path::new("/a/b/c"));
+        let d = std::env::temp_dir().join(format!("opencrg-fmu-unit-{}", std::process::id()));
+        std::fs::create_dir_all(d.join("a/b")).unwrap();
+        let files = [d.join("a/b/top.crg")];
+        assert_eq!(
+            highest_on_the_way(&d.join("a/b/../b/up.crg"), &files).unwrap(),
+            Some(canonical(&d.join("a")).unwrap())
+        );
+        assert_eq!(highest_on_the_way(&d.join("a/b/x.crg"), &files).unwrap(), None);
+        let _ = std::fs::remove_dir_all(&d);
     }
 }
