@@ -80,7 +80,7 @@ pub struct Instance {
     kind: Kind,
     wheel_count: u32,
     /// Bit k set: quantity k of a wheel is a Real variable of this FMU.
-    reals: u128,
+    reals: u32,
     wheels: Wheels,
     interface: Interface,
     fmi: Fmi,
@@ -129,9 +129,9 @@ impl Instance {
         };
         let wheels = fmu.wheels(&[]).map_err(|e| e.to_string())?;
         let wheel_count = fmu.config.wheels;
-        let reals = (0..variables::WHEEL_STRIDE)
+        let reals = (0..32)
             .filter(|&k| Quantity::from_offset(k).is_some_and(|q| q.of(kind) && q.ty() == Type::Real))
-            .fold(0u128, |mask, k| mask | 1 << k);
+            .fold(0u32, |mask, k| mask | 1 << k);
         Ok(Instance {
             fmu,
             kind,
@@ -223,7 +223,7 @@ impl Instance {
     #[inline(always)]
     fn wheel_real(&self, vr: u32) -> Option<(usize, Quantity)> {
         let (wheel, k) = (vr / variables::WHEEL_STRIDE, vr % variables::WHEEL_STRIDE);
-        let known = wheel.wrapping_sub(1) < self.wheel_count && (self.reals >> k) & 1 == 1;
+        let known = wheel.wrapping_sub(1) < self.wheel_count && k < 32 && (self.reals >> k) & 1 == 1;
         known.then(|| (wheel as usize - 1, Quantity::from_offset(k).unwrap_or(Quantity::X)))
     }
 

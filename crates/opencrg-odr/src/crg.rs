@@ -29,9 +29,8 @@ pub(crate) struct CrgFiles {
     by_path: BTreeMap<PathBuf, usize>,
 }
 
-/// Reads a CRG file for a map: its modifiers only if it gives some.
-fn load(path: &std::path::Path) -> Result<CrgFile> {
-    let mut road = opencrg_core::Road::load(path)?;
+/// A CRG file for a map, read: its modifiers only if it gives some.
+fn prepared(mut road: opencrg_core::Road) -> Result<CrgFile> {
     if !road.header().modifiers_given {
         road.modifiers_mut().clear();
     }
@@ -54,17 +53,44 @@ fn load(path: &std::path::Path) -> Result<CrgFile> {
     Ok(CrgFile { whole: Arc::new(road), grid: Arc::new(flat), base })
 }
 
+/// Where a map's CRG files come from.
+pub(crate) enum Source<'a> {
+    /// The files the records name, resolved against the map's folder.
+    Disk,
+    /// Files held in memory, by name: a record takes the one named as its `file` is
+    /// written, else the one whose last path component is its file's.
+    Memory(&'a [(String, Vec<u8>)]),
+}
+
+impl Source<'_> {
+    /// The road a record's file holds.
+    fn read(&self, record: &CrgRecord) -> Result<opencrg_core::Road> {
+        match self {
+            Source::Disk => opencrg_core::Road::load(&record.path),
+            Source::Memory(files) => {
+                let last = |name: &str| name.rsplit(['/', '\\']).next().unwrap_or(name).to_string();
+                let found = files
+                    .iter()
+                    .find(|(name, _)| *name == record.file)
+                    .or_else(|| files.iter().find(|(name, _)| last(name) == last(&record.file)))
+                    .ok_or_else(|| Error::out_of_range(format!("no file named '{}' was given", record.file)))?;
+                opencrg_core::Road::from_bytes(found.1.clone(), &found.0)
+            }
+        }
+    }
+}
+
 impl CrgFiles {
-    /// Loads every file the records of `map` name; refused: a file that cannot be read,
-    /// named with the map's line of the record.
-    pub fn load(map: &Map) -> Result<CrgFiles> {
+    /// Loads every file the records of `map` name from `source`; refused: a file that
+    /// cannot be read, named with the map's line of the record.
+    pub fn load(map: &Map, source: &Source<'_>) -> Result<CrgFiles> {
         let mut files = CrgFiles::default();
         let records = map.roads.iter().flat_map(|r| &r.crg).chain(map.junctions.iter().flat_map(|j| &j.crg));
         for record in records {
             if files.by_path.contains_key(&record.path) {
                 continue;
             }
-            let file = load(&record.path).map_err(|e| Error::Format {
+            let file = source.read(record).and_then(prepared).map_err(|e| Error::Format {
                 path: map.path.clone(),
                 location: Location::Line(record.line),
                 field: format!("<CRG> file '{}'", record.file),

@@ -5,7 +5,7 @@
 //! where its wheel was, so that a wheel moving along a road is found again without the
 //! index, and its own contact points on the CRG files.
 
-use crate::crg::{self, CrgFiles, CrgPoints, Laid, Layer};
+use crate::crg::{self, CrgFiles, CrgPoints, Laid, Layer, Source};
 use crate::last_wins::{layer_at, visible};
 use crate::locate::{Anchor, Footing, RoadIndex, RoadPos};
 use crate::map::{CrgPurpose, Junction, Map, Road};
@@ -53,9 +53,20 @@ impl Surface {
         Surface::new(Map::load(path)?)
     }
 
-    /// `map` ready to answer.
+    /// `map` ready to answer, its CRG files read from where its records name them.
     pub fn new(map: Map) -> Result<Surface> {
-        let files = CrgFiles::load(&map)?;
+        Surface::with_files(map, &Source::Disk)
+    }
+
+    /// `map` ready to answer, its CRG files from `files` (name and content): a record
+    /// takes the file named as its `file` attribute is written, else the one of the same
+    /// last path component. For maps read from bytes, where there is no folder.
+    pub fn from_files(map: Map, files: &[(String, Vec<u8>)]) -> Result<Surface> {
+        Surface::with_files(map, &Source::Memory(files))
+    }
+
+    fn with_files(map: Map, source: &Source<'_>) -> Result<Surface> {
+        let files = CrgFiles::load(&map, source)?;
         let index = RoadIndex::new(&map);
         let junctions: BTreeMap<&str, &Junction> = map.junctions.iter().map(|j| (j.id.as_str(), j)).collect();
         let layers = map

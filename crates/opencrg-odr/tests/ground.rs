@@ -405,3 +405,30 @@ fn a_junctions_records_lie_on_its_connecting_roads_only() {
     let findings = opencrg_odr::check(&junction_map(&d, records, own));
     assert!(findings.iter().any(|f| f.place.contains("junction j")), "{findings:?}");
 }
+
+/// A map read from bytes with its CRG files given as bytes answers as the map read from
+/// its folder; a file not given is refused, naming it and the record's line.
+#[test]
+fn a_map_from_bytes_with_its_crg_files_answers_as_from_its_folder() {
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/data");
+    let from_disk = Arc::new(Surface::load(data.join("demo_map.xodr")).unwrap());
+    let bytes = std::fs::read(data.join("demo_map.xodr")).unwrap();
+    let map = || Map::from_bytes(&bytes, Path::new("demo_map.xodr")).unwrap();
+    let crg = std::fs::read(data.join("demo_road.crg")).unwrap();
+    // Found by its name as written, and by its last path component.
+    for name in ["demo_road.crg", "somewhere/else/demo_road.crg"] {
+        let in_memory = Arc::new(Surface::from_files(map(), &[(name.to_string(), crg.clone())]).unwrap());
+        let (mut a, mut b) = (from_disk.probe(), in_memory.probe());
+        let mut met = 0;
+        for k in 0..400 {
+            let (x, y) = (k as f64 * 0.4, -4.0 + (k % 17) as f64 * 0.5);
+            let (ga, gb) = (a.ground(x, y), b.ground(x, y));
+            // (Debug's text: NaN friction equal, every other number to the bit.)
+            assert_eq!(format!("{ga:?}"), format!("{gb:?}"), "({x}, {y})");
+            met += usize::from(ga.is_some());
+        }
+        assert!(met > 100, "{met}");
+    }
+    let e = Surface::from_files(map(), &[("other.crg".to_string(), crg)]).err().unwrap().to_string();
+    assert!(e.contains("demo_map.xodr:") && e.contains("demo_road.crg") && e.contains("no file named"), "{e}");
+}

@@ -52,8 +52,10 @@ impl From<Compat> for LoadOptions {
     }
 }
 
-/// Largest road accepted, in grid cells (guards against headers declaring absurd sizes).
-pub const MAX_CELLS: usize = 1 << 34;
+/// Largest road accepted, in grid cells (guards against headers declaring absurd sizes):
+/// 2^34 (64 GiB of heights) where addresses have 64 bits, 2^29 (2 GiB, half of what a
+/// 32-bit address space holds, as WebAssembly's) where they have 32.
+pub const MAX_CELLS: usize = if usize::BITS >= 64 { 1 << (usize::BITS / 2 + 2) } else { 1 << 29 };
 
 impl Road {
     /// Computes everything derived from the channels: reference line x/y and z,
