@@ -17,7 +17,7 @@ pub(crate) struct FmuArgs {
     #[arg(long, default_value_t = 4)]
     wheels: u32,
     /// The FMI version: 2 (2.0) or 3 (3.0).
-    #[arg(long, default_value_t = 2, value_parser = clap::value_parser!(u32).range(2..=3))]
+    #[arg(long, default_value_t = 2)]
     fmi: u32,
     /// A folder of FMU binaries laid out as PLATFORM/FILE (x86_64-linux/libopencrg_fmi.so,
     /// x86_64-windows/opencrg_fmi.dll, aarch64-linux/libopencrg_fmi.so); default:
@@ -66,7 +66,11 @@ fn binaries(named: Option<&Path>) -> Result<Vec<Binary>, Failure> {
 
 /// Runs `opencrg fmu`.
 pub(crate) fn run(args: FmuArgs) -> Result<(), Failure> {
-    let fmi = if args.fmi == 3 { Fmi::V3 } else { Fmi::V2 };
+    let fmi = match args.fmi {
+        2 => Fmi::V2,
+        3 => Fmi::V3,
+        other => return Err(format!("--fmi {other}: 2 (FMI 2.0) or 3 (FMI 3.0)")),
+    };
     let options = FmuOptions { wheels: args.wheels, fmi, binaries: binaries(args.binaries.as_deref())? };
     let report = write_fmu(&args.road, &args.output, &options).map_err(|e| e.to_string())?;
     let platforms: Vec<&str> = report.platforms.iter().map(|p| p.tuple()).collect();

@@ -584,3 +584,44 @@ fn a_group_of_commands_names_every_one_of_them() {
         );
     }
 }
+
+/// `opencrg fmu` packs with the binaries of a folder named, and refuses in one line what
+/// it cannot pack, writing nothing.
+#[test]
+fn fmu_packs_a_road_and_refuses_in_one_line() {
+    let d = dir("fmu");
+    let road = write_road(&d);
+    let binaries = d.join("binaries/x86_64-linux");
+    std::fs::create_dir_all(&binaries).unwrap();
+    std::fs::write(binaries.join("libopencrg_fmi.so"), b"a stand-in").unwrap();
+    let folder = d.join("binaries");
+    let out = d.join("road.fmu");
+    let args = ["fmu", road.to_str().unwrap(), out.to_str().unwrap(), "--binaries", folder.to_str().unwrap()];
+    let done = opencrg(&[&args[..], &["--wheels", "2", "--fmi", "3"]].concat(), None);
+    assert!(done.status.success(), "{}", text(&done.stderr));
+    let said = text(&done.stderr);
+    assert!(said.contains("FMI 3.0") && said.contains("2 wheels") && said.contains("x86_64-linux"), "{said}");
+    assert!(out.metadata().unwrap().len() > 1000);
+    let refused = d.join("refused.fmu");
+    for extra in [vec!["--wheels", "0"], vec!["--wheels", "1000"], vec!["--fmi", "4"]] {
+        let mut args = args.to_vec();
+        args[2] = refused.to_str().unwrap();
+        let done = opencrg(&[&args[..], &extra[..]].concat(), None);
+        assert_eq!(done.status.code(), Some(2), "{extra:?}");
+        assert_eq!(text(&done.stderr).trim().lines().count(), 1, "{extra:?}: {}", text(&done.stderr));
+        assert!(!refused.exists());
+    }
+    let empty = d.join("empty");
+    std::fs::create_dir_all(&empty).unwrap();
+    let done = opencrg(
+        &["fmu", road.to_str().unwrap(), refused.to_str().unwrap(), "--binaries", empty.to_str().unwrap()],
+        None,
+    );
+    assert_eq!(done.status.code(), Some(2));
+    assert!(text(&done.stderr).contains("no FMU binary"), "{}", text(&done.stderr));
+    let done =
+        opencrg(&["fmu", "/no/such/road.crg", refused.to_str().unwrap(), "--binaries", folder.to_str().unwrap()], None);
+    assert_eq!(done.status.code(), Some(2));
+    assert!(text(&done.stderr).contains("/no/such/road.crg"), "{}", text(&done.stderr));
+    assert!(!refused.exists());
+}
