@@ -71,3 +71,31 @@ fn variables_expand() {
         assert_eq!(Road::load(&top).unwrap().u_range(), (0.0, 10.0), "{line}");
     }
 }
+
+/// References read from files held in memory: by the path beside the referencing name, as
+/// written, or by the last path component; none read from disk; a file not given named.
+#[test]
+fn references_are_read_from_files_held_in_memory() {
+    let d = dir("memory");
+    let data = std::fs::read(data_file(&d)).unwrap();
+    let top = "$ROAD_CRG_FILE\n ../data/surface_data.crg\n$\n".as_bytes().to_vec();
+    let from_disk = {
+        std::fs::create_dir_all(d.join("top")).unwrap();
+        std::fs::create_dir_all(d.join("data")).unwrap();
+        std::fs::write(d.join("data/surface_data.crg"), &data).unwrap();
+        std::fs::write(d.join("top/top.crg"), &top).unwrap();
+        Road::load(d.join("top/top.crg")).unwrap()
+    };
+    for name in ["roads/data/surface_data.crg", "../data/surface_data.crg", "elsewhere/surface_data.crg"] {
+        let files = [("unrelated.crg".to_string(), b"not a road".to_vec()), (name.to_string(), data.clone())];
+        let road =
+            Road::from_bytes_with_files(top.clone(), "roads/top/top.crg", &files, opencrg_core::Compat::default())
+                .unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(road.header().references, vec![PathBuf::from(name)]);
+        assert_eq!(road.grid().values(), from_disk.grid().values(), "{name}");
+        assert_eq!(road.options().get_int(opt::BORDER_MODE_U), Some(3));
+    }
+    // The file is on disk beside the name, but only the files given are read.
+    let e = Road::from_bytes_with_files(top, d.join("top/top.crg"), &[], opencrg_core::Compat::default()).unwrap_err();
+    assert!(e.to_string().contains("surface_data.crg") && e.to_string().contains("cannot read"), "{e}");
+}

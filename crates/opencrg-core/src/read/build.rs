@@ -44,8 +44,29 @@ impl Road {
 
     /// [`Road::from_bytes`] with options (a [`Compat`](crate::Compat) alone will do).
     pub fn from_bytes_with(bytes: Vec<u8>, name: impl AsRef<Path>, options: impl Into<LoadOptions>) -> Result<Road> {
-        let name = name.as_ref();
-        let (header, data) = reader::read_bytes(bytes, name)?;
+        Road::from_bytes_and_files(bytes, name.as_ref(), None, options.into())
+    }
+
+    /// [`Road::from_bytes_with`] whose file references are read from `files` (name and
+    /// content) instead of the disk: a reference takes the file named as its path beside
+    /// `name`, else as written, else the one of the same last path component. For roads
+    /// where there is no file system (WebAssembly) or whose files are held in memory.
+    pub fn from_bytes_with_files(
+        bytes: Vec<u8>,
+        name: impl AsRef<Path>,
+        files: &[(String, Vec<u8>)],
+        options: impl Into<LoadOptions>,
+    ) -> Result<Road> {
+        Road::from_bytes_and_files(bytes, name.as_ref(), Some(files), options.into())
+    }
+
+    fn from_bytes_and_files(
+        bytes: Vec<u8>,
+        name: &Path,
+        files: Option<&[(String, Vec<u8>)]>,
+        options: LoadOptions,
+    ) -> Result<Road> {
+        let (header, data) = reader::read_bytes(bytes, name, files)?;
         let data = data.ok_or_else(|| {
             Error::format(
                 name,
@@ -54,7 +75,7 @@ impl Road {
                 "no data section ($$$$ line) in the file or the files it references",
             )
         })?;
-        Road::build(header, data, options.into())
+        Road::build(header, data, options)
     }
 
     /// A road from a header and its data: the layout of the channels, the u axis, the

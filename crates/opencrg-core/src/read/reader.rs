@@ -59,7 +59,9 @@ pub(crate) struct DataSource {
     pub offset: usize,
 }
 
-struct Loader {
+struct Loader<'a> {
+    /// Files held in memory that references are read from (by name), instead of disk.
+    files: Option<&'a [(String, Vec<u8>)]>,
     header: Header,
     /// Where each `$ROAD_CRG_MPRO` keyword stood, parallel to `header.mpro`.
     mpro_places: Vec<(PathBuf, usize)>,
@@ -71,19 +73,24 @@ struct Loader {
 
 /// Reads the header of `path` (following file references) and locates the data.
 pub(crate) fn read(path: &Path) -> Result<(Header, Option<DataSource>)> {
-    let mut loader = Loader::new(path);
+    let mut loader = Loader::new(path, None);
     loader.read_file(path, 0)?;
     loader.resolve_map()?;
     Ok((loader.header, loader.data))
 }
 
 /// Reads a CRG file held in memory; `name` is used in messages and to resolve
-/// relative file references.
-pub(crate) fn read_bytes(bytes: Vec<u8>, name: &Path) -> Result<(Header, Option<DataSource>)> {
+/// relative file references: from disk, or from `files` where given (see
+/// [`Loader::read_reference`]).
+pub(crate) fn read_bytes(
+    bytes: Vec<u8>,
+    name: &Path,
+    files: Option<&[(String, Vec<u8>)]>,
+) -> Result<(Header, Option<DataSource>)> {
     if bytes.is_empty() {
         return Err(Error::format(name, Location::File, "file", "is empty"));
     }
-    let mut loader = Loader::new(name);
+    let mut loader = Loader::new(name, files);
     let offset = loader.parse(name, &bytes, 0)?;
     loader.resolve_map()?;
     let data = match offset {
@@ -98,9 +105,10 @@ pub(crate) fn read_bytes(bytes: Vec<u8>, name: &Path) -> Result<(Header, Option<
     Ok((loader.header, data))
 }
 
-impl Loader {
-    fn new(path: &Path) -> Self {
+impl<'a> Loader<'a> {
+    fn new(path: &Path, files: Option<&'a [(String, Vec<u8>)]>) -> Self {
         Loader {
+            files,
             header: Header::new(path),
             mpro_places: Vec::new(),
             data: None,
@@ -131,7 +139,7 @@ fn open(path: &Path) -> Result<FileBytes> {
     }
 }
 
-impl Loader {
+impl Loader<'_> {
     /// Resolves the `$ROAD_CRG_MPRO` keywords read into the header's map projection.
     fn resolve_map(&mut self) -> Result<()> {
         let entries: Vec<MapEntry> = (self.header.mpro.iter().zip(&self.mpro_places))
@@ -142,8 +150,40 @@ impl Loader {
         Ok(())
     }
 
+    /// Reads a referenced file: from the files in memory where there are some (the one
+    /// named as the reference's path beside the referencing file, else as written, else
+    /// the one of the same last path component), else from disk.
+    fn read_reference(&mut self, from: &Path, name: &Path, level: usize) -> Result<PathBuf> {
+        let Some(files) = self.files else {
+            let target = resolve_reference(from, name);
+            self.read_file(&target, level)?;
+            return Ok(target);
+        };
+        let beside = lexical(&from.parent().unwrap_or(Path::new("")).join(name));
+        let last = |p: &Path| p.file_name().map(|n| n.to_os_string());
+        let found = files
+            .iter()
+            .find(|(n, _)| lexical(Path::new(n)) == beside)
+            .or_else(|| files.iter().find(|(n, _)| lexical(Path::new(n)) == lexical(name)))
+            .or_else(|| files.iter().find(|(n, _)| last(Path::new(n)) == last(name)));
+        let Some((found, bytes)) = found else {
+            return Err(Error::reading(&beside, std::io::Error::from(std::io::ErrorKind::NotFound)));
+        };
+        let target = PathBuf::from(found);
+        self.read_held(&target, Some(FileBytes::Owned(bytes.clone())), level)?;
+        Ok(target)
+    }
+
     fn read_file(&mut self, path: &Path, level: usize) -> Result<()> {
-        let canonical = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
+        self.read_held(path, None, level)
+    }
+
+    /// Reads the file `path` (its bytes `held` when they are at hand, else from disk).
+    fn read_held(&mut self, path: &Path, held: Option<FileBytes>, level: usize) -> Result<()> {
+        let canonical = match held {
+            None => path.canonicalize().unwrap_or_else(|_| path.to_path_buf()),
+            Some(_) => lexical(path),
+        };
         if self.stack.contains(&canonical) {
             return Err(Error::format(path, Location::File, "$ROAD_CRG_FILE", "file references form a loop"));
         }
@@ -155,7 +195,10 @@ impl Loader {
                 format!("file references nest deeper than {MAX_REFERENCE_DEPTH} levels"),
             ));
         }
-        let bytes = open(path)?;
+        let bytes = match held {
+            Some(bytes) => bytes,
+            None => open(path)?,
+        };
         self.stack.push(canonical);
         let result = self.parse(path, &bytes, level);
         self.stack.pop();
@@ -267,9 +310,9 @@ impl Loader {
                 format!("environment variable ${var} is not set"),
             )
         })?;
-        let target = resolve_reference(from, Path::new(&expanded));
-        self.header.references.push(target.clone());
-        self.read_file(&target, level + 1)
+        let target = self.read_reference(from, Path::new(&expanded), level + 1)?;
+        self.header.references.push(target);
+        Ok(())
     }
 
     fn road_line(&mut self, path: &Path, number: usize, text: &str, level: usize) -> Result<()> {
@@ -447,6 +490,24 @@ fn expand_variables(name: &str) -> std::result::Result<String, String> {
     }
     out.push_str(rest);
     Ok(out)
+}
+
+/// A path with `.` dropped and `..` taken back where it can be (`a/b/../c` is `a/c`),
+/// without asking the file system.
+fn lexical(path: &Path) -> PathBuf {
+    let mut out = PathBuf::new();
+    for part in path.components() {
+        match part {
+            std::path::Component::CurDir => {}
+            std::path::Component::ParentDir
+                if out.components().next_back().is_some_and(|c| matches!(c, std::path::Component::Normal(_))) =>
+            {
+                out.pop();
+            }
+            other => out.push(other.as_os_str()),
+        }
+    }
+    out
 }
 
 /// A relative reference is looked up in the working folder (as the reference library
