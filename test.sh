@@ -12,7 +12,8 @@
 # import library) and from the Linux archives (glibc 2.17, zig; the aarch64 one under
 # qemu), with CMake and pkg-config consumers, and each platform's FMU binary through a C
 # host of the project's own; FMUs driven by FMPy (FMI 2 and 3, co-simulation and model
-# exchange) against the C API; the .glb export against the Khronos
+# exchange) against the C API; the npm package (WebAssembly) in Node and its web page in
+# headless Chromium; the .glb export against the Khronos
 # glTF validator, the 3D view in headless Chromium; last the Python package: its
 # manylinux2014 wheel built with maturin and zig, installed into a fresh virtual
 # environment without cargo, and its pytest suite (pickling, multiprocessing, Dask); the
@@ -90,6 +91,24 @@ target/fmu-venv/bin/pip install -q --upgrade pip
 target/fmu-venv/bin/pip install -q "fmpy>=0.3.20,<0.4" numpy pytest
 OPENCRG_CLI="$PWD/target/release/opencrg" OPENCRG_LIB="$PWD/target/release/libopencrg.so" \
     target/fmu-venv/bin/python -m pytest -q -p no:cacheprovider crates/opencrg-fmi/tests/fmpy
+step "WebAssembly"
+# The npm package and the web page (packaging/wasm.sh): the conformance suite's client in
+# JavaScript in both profiles, the API, a shared map with CRG records in every mode
+# against `opencrg odr eval`, the guide's example, in Node; the page in headless Chromium
+# (probes of a road and a map as the command answers, the top view drawn).
+cargo clippy -q -p opencrg-wasm --target wasm32-unknown-unknown -- -D warnings
+packaging/wasm.sh target/wasm-dist
+for profile in current 2.0.1; do
+    golden=golden; [ $profile = current ] || golden=golden-$profile
+    node packaging/npm/test/conformance.mjs target/wasm-dist/package ../shared/conformance target/wasm-conformance-$profile $profile
+    result=$(python3 ../shared/conformance/compare.py ../shared/conformance/$golden target/wasm-conformance-$profile | tail -1)
+    echo "npm package, conformance ($profile profile): $result"
+    [ "$result" = "232 passed, 0 failed" ]
+done
+OPENCRG_CLI="$PWD/target/release/opencrg" node packaging/npm/test/api.mjs target/wasm-dist/package examples/data
+OPENCRG_CLI="$PWD/target/release/opencrg" node packaging/npm/test/map.mjs target/wasm-dist/package ../shared/opendrive target/wasm-maps
+node packaging/npm/test/guide.mjs target/wasm-dist/package . target/wasm-guide
+python3 packaging/web/test_page.py target/wasm-dist/web target/release/opencrg examples/data
 step "glTF and views"
 # The .glb export of the demo road (curved, sloped, banked), whole, a part and simplified,
 # and of the demo map (the demo road laid on a road of an OpenDRIVE map), against the

@@ -46,12 +46,13 @@ def pixels(path):
     return rows
 
 
-rows = pixels(sys.argv[1])
-body = [p for row in rows[80:] for p in row]
-background = (244, 244, 242)
-drawn = [p for p in body if max(abs(p[k] - background[k]) for k in range(3)) > 24]
-red = [p for p in drawn if p[0] > 150 and p[1] < 80 and p[2] < 80]
-share = len(drawn) / len(body)
-print(f"{sys.argv[1]}: {len(drawn)} of {len(body)} pixels drawn ({100 * share:.1f} %), {len(red)} of the reference line")
-assert share > 0.01, "the road is not drawn"
-assert red, "the reference line is not drawn"
+if __name__ == "__main__":
+    rows = pixels(sys.argv[1])
+    body = [p for row in rows[80:] for p in row]
+    background = (244, 244, 242)
+    drawn = [p for p in body if max(abs(p[k] - background[k]) for k in range(3)) > 24]
+    red = [p for p in drawn if p[0] > 150 and p[1] < 80 and p[2] < 80]
+    share = len(drawn) / len(body)
+    print(f"{sys.argv[1]}: {len(drawn)} of {len(body)} pixels drawn ({100 * share:.1f} %), {len(red)} of the reference line")
+    assert share > 0.01, "the road is not drawn"
+    assert red, "the reference line is not drawn"

@@ -21,7 +21,7 @@
 // `base` (errors, settings, profiles, memory, units), `model` (the road as data), `read`
 // and `write` (files to model and back, beside each other), `parts` (a road as arrays and
 // back), `query` (evaluation, search, contact points, modifiers, checks), `geo`, and
-// `synth` on top. Modules use each other by these paths (`crate::model::grid`); what users
+// `info` and `synth` on top. Modules use each other by these paths (`crate::model::grid`); what users
 // reach is re-exported below.
 mod base {
     pub mod budget;
@@ -70,6 +70,7 @@ mod geo {
     pub(crate) mod helmert;
     pub(crate) mod map_check;
 }
+pub mod info;
 pub mod synth;
 
 pub use base::budget::{parse_bytes, Budget};

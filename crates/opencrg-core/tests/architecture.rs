@@ -8,7 +8,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// The workspace's crates, by folder under `crates/`.
-const CRATES: [&str; 10] = [
+const CRATES: [&str; 11] = [
     "opencrg-core",
     "opencrg-tools",
     "opencrg-odr",
@@ -18,6 +18,7 @@ const CRATES: [&str; 10] = [
     "opencrg-cli",
     "opencrg-python",
     "opencrg-difftest",
+    "opencrg-wasm",
     "opencrg-capi",
 ];
 

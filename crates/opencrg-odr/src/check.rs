@@ -1,6 +1,7 @@
 //! The checker: the rules of the CRG records (`../shared/spec/opendrive-crg.md`) and of
 //! the roads they lie on, each finding naming the road or junction and the line.
 
+use crate::crg::Source;
 use crate::map::{CrgMode, CrgOrientation, CrgPurpose, CrgRecord, Map, Road};
 use std::collections::BTreeMap;
 use std::path::PathBuf;
@@ -37,6 +38,7 @@ fn record_findings(
     place: &str,
     length: Option<f64>,
     old: bool,
+    source: Option<&Source<'_>>,
     files: &mut Files,
     out: &mut Vec<Finding>,
 ) {
@@ -78,9 +80,8 @@ fn record_findings(
     } else if record.mode != CrgMode::Global && old {
         find("a junction's records are of mode global before OpenDRIVE 1.8".into());
     }
-    let unusable = files
-        .entry(record.path.clone())
-        .or_insert_with(|| opencrg_core::Road::load(&record.path).err().map(|e| e.to_string()));
+    let Some(source) = source else { return };
+    let unusable = files.entry(record.path.clone()).or_insert_with(|| source.read(record).err().map(|e| e.to_string()));
     if let Some(e) = unusable {
         find(format!("the CRG file cannot be used: {e}"));
     }
@@ -116,18 +117,32 @@ fn road_findings(road: &Road, out: &mut Vec<Finding>) {
 /// Everything wrong with `map`, in the file's order: the roads' geometry, the CRG records'
 /// rules and files, junctions whose connecting roads carry records of their own.
 pub fn check(map: &Map) -> Vec<Finding> {
+    check_from(map, Some(&Source::Disk))
+}
+
+/// [`check`]'s findings with the CRG files read from `source` (none: the files are read
+/// already, as a [`Surface`](crate::Surface)'s are).
+pub(crate) fn check_from(map: &Map, source: Option<&Source<'_>>) -> Vec<Finding> {
     let (mut out, mut files) = (Vec::new(), Files::new());
     let old = map.header.rev_major == 1 && map.header.rev_minor < 8;
     for road in &map.roads {
         road_findings(road, &mut out);
         for record in &road.crg {
-            record_findings(record, &format!("road {}", road.id), Some(road.length), false, &mut files, &mut out);
+            record_findings(
+                record,
+                &format!("road {}", road.id),
+                Some(road.length),
+                false,
+                source,
+                &mut files,
+                &mut out,
+            );
         }
     }
     for junction in &map.junctions {
         let place = format!("junction {}", junction.id);
         for record in &junction.crg {
-            record_findings(record, &place, None, old, &mut files, &mut out);
+            record_findings(record, &place, None, old, source, &mut files, &mut out);
         }
         if !junction.crg.is_empty() {
             for id in &junction.connecting_roads {

@@ -64,7 +64,7 @@ pub(crate) enum Source<'a> {
 
 impl Source<'_> {
     /// The road a record's file holds.
-    fn read(&self, record: &CrgRecord) -> Result<opencrg_core::Road> {
+    pub(crate) fn read(&self, record: &CrgRecord) -> Result<opencrg_core::Road> {
         match self {
             Source::Disk => opencrg_core::Road::load(&record.path),
             Source::Memory(files) => {

@@ -90,6 +90,12 @@ impl Surface {
         &self.map
     }
 
+    /// What [`check`](crate::check) finds wrong with the map (its CRG files, read
+    /// already, are usable).
+    pub fn check(&self) -> Vec<crate::check::Finding> {
+        crate::check::check_from(&self.map, None)
+    }
+
     /// Where on road `road` (index) the elevation records start and end (s).
     pub fn crg_bounds(&self, road: usize) -> impl Iterator<Item = f64> + '_ {
         self.layers[road]

@@ -9,20 +9,9 @@ use pyo3::exceptions::{PyKeyError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-/// The Python name of a setting.
+/// The Python name of a setting: its name in code, lower-cased.
 pub(crate) fn python_name(s: &SettingInfo) -> String {
-    if let Some(word) = s.keyword {
-        return word.to_ascii_lowercase();
-    }
-    let bare = s.c_constant.trim_start_matches("dCrgCpOption").trim_start_matches("dCrgMod");
-    let mut out = String::new();
-    for (i, c) in bare.chars().enumerate() {
-        if c.is_ascii_uppercase() && i > 0 {
-            out.push('_');
-        }
-        out.push(c.to_ascii_lowercase());
-    }
-    out
+    s.code_name().to_ascii_lowercase()
 }
 
 /// The setting of `family` named `name` in Python.

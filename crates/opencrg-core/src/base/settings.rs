@@ -184,6 +184,26 @@ pub struct SettingInfo {
     pub accepts: Accepts,
 }
 
+impl SettingInfo {
+    /// The setting's name in code (the Python package lower-cases it, JavaScript takes
+    /// it in any case): its file keyword (`BORDER_MODE_U`), or, for a setting files
+    /// cannot carry, its C constant without prefix in snake case (`CURV_MODE`).
+    pub fn code_name(&self) -> String {
+        if let Some(word) = self.keyword {
+            return word.to_string();
+        }
+        let bare = self.c_constant.trim_start_matches("dCrgCpOption").trim_start_matches("dCrgMod");
+        let mut out = String::new();
+        for (i, c) in bare.chars().enumerate() {
+            if c.is_ascii_uppercase() && i > 0 {
+                out.push('_');
+            }
+            out.push(c.to_ascii_uppercase());
+        }
+        out
+    }
+}
+
 // One argument per column keeps each table row on one line.
 #[allow(clippy::too_many_arguments)]
 const fn row(

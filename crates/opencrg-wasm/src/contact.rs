@@ -1,0 +1,100 @@
+//! `ContactPoint`: a road with options of its own and an x/y search history, its calls
+//! made point by point in order, as the C API's.
+
+use crate::evaluate::{call, Call};
+use crate::road::Road;
+use crate::settings;
+use js_sys::Uint8Array;
+use opencrg_core::settings::Family;
+use wasm_bindgen::prelude::*;
+
+/// A point of evaluation: its own options and x/y search history.
+#[wasm_bindgen]
+pub struct ContactPoint {
+    cp: opencrg_core::ContactPoint,
+    refused: Vec<u8>,
+}
+
+#[wasm_bindgen]
+impl ContactPoint {
+    /// A contact point on `road` with the road's options and `options` on top
+    /// (`{BORDER_MODE_U: 0, CURV_MODE: 1, ...}`: the file's keywords, any case).
+    #[wasm_bindgen(constructor)]
+    pub fn new(road: &Road, options: JsValue) -> Result<ContactPoint, JsError> {
+        Ok(ContactPoint { cp: road.contact_point(&options)?, refused: Vec::new() })
+    }
+
+    /// Sets one option by its keyword (any case).
+    #[wasm_bindgen(js_name = setOption)]
+    pub fn set_option(&mut self, name: &str, value: f64) -> Result<(), JsError> {
+        let mut table = self.cp.options().clone();
+        settings::set(&mut table, Family::Option, name, value)?;
+        let info = settings::lookup(Family::Option, name)?;
+        match table.get(info.id) {
+            Some(v) => self.cp.set_option_value(info.id, v).map_err(crate::errors::error),
+            None => {
+                self.cp.remove_option(info.id);
+                Ok(())
+            }
+        }
+    }
+
+    /// The options in force, `{NAME: value}`.
+    #[wasm_bindgen(getter)]
+    pub fn options(&self) -> js_sys::Object {
+        settings::object(self.cp.options())
+    }
+
+    /// Which points of the last call the library refused (1; the C API's return code
+    /// 0), where the others hold 0 (an answer, NaN where the grid holds NaN).
+    #[wasm_bindgen(getter)]
+    pub fn refused(&self) -> Uint8Array {
+        Uint8Array::from(self.refused.as_slice())
+    }
+
+    fn evaluate(&mut self, which: Call, a: &JsValue, b: &JsValue) -> Result<JsValue, JsError> {
+        call(&mut self.cp, which, a, b, &mut self.refused)
+    }
+
+    /// Elevation at (u, v).
+    #[wasm_bindgen(js_name = uvToZ)]
+    pub fn uv_to_z(&mut self, u: &JsValue, v: &JsValue) -> Result<JsValue, JsError> {
+        self.evaluate(Call::UvToZ, u, v)
+    }
+
+    /// Elevation at (x, y).
+    #[wasm_bindgen(js_name = xyToZ)]
+    pub fn xy_to_z(&mut self, x: &JsValue, y: &JsValue) -> Result<JsValue, JsError> {
+        self.evaluate(Call::XyToZ, x, y)
+    }
+
+    /// `[x, y]` at (u, v).
+    #[wasm_bindgen(js_name = uvToXy)]
+    pub fn uv_to_xy(&mut self, u: &JsValue, v: &JsValue) -> Result<JsValue, JsError> {
+        self.evaluate(Call::UvToXy, u, v)
+    }
+
+    /// `[u, v]` at (x, y).
+    #[wasm_bindgen(js_name = xyToUv)]
+    pub fn xy_to_uv(&mut self, x: &JsValue, y: &JsValue) -> Result<JsValue, JsError> {
+        self.evaluate(Call::XyToUv, x, y)
+    }
+
+    /// `[heading, curvature]` at (u, v).
+    #[wasm_bindgen(js_name = uvToPk)]
+    pub fn uv_to_pk(&mut self, u: &JsValue, v: &JsValue) -> Result<JsValue, JsError> {
+        self.evaluate(Call::UvToPk, u, v)
+    }
+
+    /// `[heading, curvature]` at (x, y).
+    #[wasm_bindgen(js_name = xyToPk)]
+    pub fn xy_to_pk(&mut self, x: &JsValue, y: &JsValue) -> Result<JsValue, JsError> {
+        self.evaluate(Call::XyToPk, x, y)
+    }
+
+    /// `[z, nx, ny, nz]` at (u, v).
+    #[wasm_bindgen(js_name = uvToNormal)]
+    pub fn uv_to_normal(&mut self, u: &JsValue, v: &JsValue) -> Result<JsValue, JsError> {
+        self.evaluate(Call::UvToNormal, u, v)
+    }
+}

@@ -1,0 +1,225 @@
+//! `Road`: a CRG file read from bytes, checked, modified, and evaluated with default
+//! options (or those given with a call).
+
+use crate::evaluate::{call, Call};
+use crate::settings;
+use js_sys::{Array, Float32Array, Object, Reflect, Uint8Array};
+use opencrg_core::settings::Family;
+use opencrg_core::{Compat, ContactPoint};
+use std::sync::Arc;
+use wasm_bindgen::prelude::*;
+
+/// A road: a CRG file in any of the four formats.
+#[wasm_bindgen]
+pub struct Road {
+    road: Arc<opencrg_core::Road>,
+}
+
+impl Road {
+    /// A contact point with the road's options and `options` on top.
+    pub(crate) fn contact_point(&self, options: &JsValue) -> Result<ContactPoint, JsError> {
+        let mut cp = ContactPoint::new(self.road.clone());
+        let mut table = cp.options().clone();
+        settings::each(options, |name, value| settings::set(&mut table, Family::Option, name, value))?;
+        for (id, value) in table.iter() {
+            cp.set_option_value(id, value).map_err(crate::errors::error)?;
+        }
+        Ok(cp)
+    }
+
+    fn evaluate(&self, which: Call, a: &JsValue, b: &JsValue, options: &JsValue) -> Result<JsValue, JsError> {
+        call(&mut self.contact_point(options)?, which, a, b, &mut Vec::new())
+    }
+}
+
+#[wasm_bindgen]
+impl Road {
+    /// Reads a CRG file held in `bytes`, named `name` in messages; `options`:
+    /// `{compat: "2.0.1" | "current", files: {name: Uint8Array, ...}}`, the files its
+    /// `$ROAD_CRG_FILE` references are read from. The modifiers are not applied yet.
+    #[wasm_bindgen(js_name = fromBytes)]
+    pub fn from_bytes(bytes: &[u8], name: Option<String>, options: JsValue) -> Result<Road, JsError> {
+        let name = name.unwrap_or_else(|| "road.crg".into());
+        let get = |key: &str| -> JsValue {
+            if options.is_object() {
+                Reflect::get(&options, &key.into()).unwrap_or(JsValue::UNDEFINED)
+            } else {
+                JsValue::UNDEFINED
+            }
+        };
+        let compat = match get("compat").as_string() {
+            Some(text) => text.parse::<Compat>().map_err(|e| JsError::new(&e.to_string()))?,
+            None => Compat::default(),
+        };
+        let files = get("files");
+        let mut held = Vec::new();
+        if let Some(object) = files.dyn_ref::<Object>() {
+            for key in Object::keys(object).iter() {
+                let value = Reflect::get(object, &key).unwrap_or(JsValue::UNDEFINED);
+                let bytes = Uint8Array::new(&value).to_vec();
+                held.push((key.as_string().unwrap_or_default(), bytes));
+            }
+        }
+        let road = opencrg_core::Road::from_bytes_with_files(bytes.to_vec(), &name, &held, compat)
+            .map_err(crate::errors::error)?;
+        Ok(Road { road: Arc::new(road) })
+    }
+
+    /// Checks the road as `crgCheck` does; throws when it fails.
+    pub fn check(&mut self) -> Result<(), JsError> {
+        Arc::make_mut(&mut self.road).check().map_err(crate::errors::error)
+    }
+
+    /// Applies the modifiers to the data (`crgDataSetModifiersApply`).
+    #[wasm_bindgen(js_name = applyModifiers)]
+    pub fn apply_modifiers(&mut self) {
+        Arc::make_mut(&mut self.road).apply_modifiers();
+    }
+
+    /// Sets one modifier by its keyword (any case); it acts at the next `applyModifiers()`.
+    #[wasm_bindgen(js_name = setModifier)]
+    pub fn set_modifier(&mut self, name: &str, value: f64) -> Result<(), JsError> {
+        settings::set(Arc::make_mut(&mut self.road).modifiers_mut(), Family::Modifier, name, value)
+    }
+
+    /// Removes every modifier (the file's and the defaults).
+    #[wasm_bindgen(js_name = clearModifiers)]
+    pub fn clear_modifiers(&mut self) {
+        Arc::make_mut(&mut self.road).modifiers_mut().clear();
+    }
+
+    /// `[uFirst, uLast]`.
+    #[wasm_bindgen(getter, js_name = uRange)]
+    pub fn u_range(&self) -> Vec<f64> {
+        let (a, b) = self.road.u_range();
+        vec![a, b]
+    }
+
+    /// `[vRight, vLeft]`.
+    #[wasm_bindgen(getter, js_name = vRange)]
+    pub fn v_range(&self) -> Vec<f64> {
+        let (a, b) = self.road.v_range();
+        vec![a, b]
+    }
+
+    /// `[uIncrement, vIncrement]`.
+    #[wasm_bindgen(getter)]
+    pub fn increments(&self) -> Vec<f64> {
+        let (a, b) = self.road.increments();
+        vec![a, b]
+    }
+
+    /// `[uStart, uEnd]` of a closed track, or `null`.
+    #[wasm_bindgen(getter, js_name = closedTrack)]
+    pub fn closed_track(&self) -> JsValue {
+        match self.road.closed_track() {
+            Some((a, b)) => js_sys::Float64Array::from([a, b].as_slice()).into(),
+            None => JsValue::NULL,
+        }
+    }
+
+    /// `[closed, uStart, uEnd]` as the C API's `crgDataSetGetUtilityDataClosedTrack`
+    /// reports it: 1 or 0, and the u range found the last time the line could be closed
+    /// (0 and 0 if never), also when modifiers have since opened it.
+    #[wasm_bindgen(getter, js_name = closedTrackReport)]
+    pub fn closed_track_report(&self) -> Vec<f64> {
+        let (closed, a, b) = self.road.closed_track_report();
+        vec![f64::from(u8::from(closed)), a, b]
+    }
+
+    /// The v of the long sections.
+    #[wasm_bindgen(getter)]
+    pub fn v(&self) -> Vec<f64> {
+        self.road.grid().v.clone()
+    }
+
+    /// The elevation grid, cross section after cross section (`nu * nv` values: the
+    /// value at cross section `i`, long section `j` at `i * nv + j`), NaN kept.
+    #[wasm_bindgen(getter)]
+    pub fn grid(&self) -> Float32Array {
+        let g = self.road.grid();
+        let nv = g.v.len();
+        let nu = g.values().len() / nv.max(1);
+        let mut out = Vec::with_capacity(nu * nv);
+        for iu in 0..nu {
+            out.extend(g.cross_section(iu));
+        }
+        Float32Array::from(out.as_slice())
+    }
+
+    /// The header: `comments`, `road_crg`, `options`, `modifiers`, `mpro`, `references`,
+    /// `format`, `channels`.
+    #[wasm_bindgen(getter)]
+    pub fn header(&self) -> Object {
+        let h = self.road.header();
+        let out = Object::new();
+        let set = |key: &str, value: JsValue| {
+            let _ = Reflect::set(&out, &key.into(), &value);
+        };
+        set("comments", h.comments.iter().map(|c| JsValue::from(c.as_str())).collect::<Array>().into());
+        let road = Object::new();
+        for (key, value) in h.road.entries() {
+            let _ = Reflect::set(&road, &key.into(), &value.into());
+        }
+        set("road_crg", road.into());
+        set("options", settings::object(&h.options).into());
+        set("modifiers", settings::object(&h.modifiers).into());
+        let mpro = Object::new();
+        for (key, value) in &h.mpro {
+            let _ = Reflect::set(&mpro, &key.as_str().into(), &value.as_str().into());
+        }
+        set("mpro", mpro.into());
+        let references = h.references.iter().map(|p| JsValue::from(p.display().to_string())).collect::<Array>();
+        set("references", references.into());
+        set("format", h.format.name().into());
+        set("channels", h.channels.iter().map(|c| JsValue::from(c.to_string())).collect::<Array>().into());
+        out
+    }
+
+    /// What `opencrg info` says of the road, the file named `name`.
+    pub fn info(&self, name: &str) -> String {
+        opencrg_core::info::text(&self.road, name)
+    }
+
+    /// Elevation at (u, v); `options`: contact point options for this call.
+    #[wasm_bindgen(js_name = uvToZ)]
+    pub fn uv_to_z(&self, u: &JsValue, v: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
+        self.evaluate(Call::UvToZ, u, v, &options)
+    }
+
+    /// Elevation at (x, y).
+    #[wasm_bindgen(js_name = xyToZ)]
+    pub fn xy_to_z(&self, x: &JsValue, y: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
+        self.evaluate(Call::XyToZ, x, y, &options)
+    }
+
+    /// `[x, y]` at (u, v).
+    #[wasm_bindgen(js_name = uvToXy)]
+    pub fn uv_to_xy(&self, u: &JsValue, v: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
+        self.evaluate(Call::UvToXy, u, v, &options)
+    }
+
+    /// `[u, v]` at (x, y).
+    #[wasm_bindgen(js_name = xyToUv)]
+    pub fn xy_to_uv(&self, x: &JsValue, y: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
+        self.evaluate(Call::XyToUv, x, y, &options)
+    }
+
+    /// `[heading, curvature]` at (u, v).
+    #[wasm_bindgen(js_name = uvToPk)]
+    pub fn uv_to_pk(&self, u: &JsValue, v: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
+        self.evaluate(Call::UvToPk, u, v, &options)
+    }
+
+    /// `[heading, curvature]` at (x, y).
+    #[wasm_bindgen(js_name = xyToPk)]
+    pub fn xy_to_pk(&self, x: &JsValue, y: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
+        self.evaluate(Call::XyToPk, x, y, &options)
+    }
+
+    /// `[z, nx, ny, nz]` at (u, v): the elevation and the upward unit normal.
+    #[wasm_bindgen(js_name = uvToNormal)]
+    pub fn uv_to_normal(&self, u: &JsValue, v: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
+        self.evaluate(Call::UvToNormal, u, v, &options)
+    }
+}

@@ -1,0 +1,102 @@
+// Types of the opencrg npm package (see docs/web.md).
+
+/** Coordinates: one number, or an array of them (`Float64Array` or any array). */
+export type Coordinates = number | Float64Array | ArrayLike<number>;
+/** An answer per point: a number for numbers given, a `Float64Array` for arrays. */
+export type Answer<T extends Coordinates> = T extends number ? number : Float64Array;
+/** Contact point options or modifiers by the file's keywords, in any case. */
+export type Settings = Record<string, number>;
+
+export interface LoadOptions {
+  /** The behaviour profile: "current" (default) or "2.0.1" for the releases. */
+  compat?: string;
+  /** Files the road's `$ROAD_CRG_FILE` references are read from, by name. */
+  files?: Record<string, Uint8Array>;
+}
+
+/** A road: a CRG file in any of the four formats (LRFI, LDFI, KRBI, KDBI). */
+export class Road {
+  private constructor();
+  /** Reads a CRG file held in memory; throws an `Error` with the command's message. */
+  static fromBytes(bytes: Uint8Array, name?: string, options?: LoadOptions): Road;
+  /** Checks the road as `crgCheck` does; throws when it fails. */
+  check(): void;
+  /** Applies the modifiers (`crgDataSetModifiersApply`). */
+  applyModifiers(): void;
+  /** Sets one modifier (`SCALE_Z_GRID`, ...); it acts at the next `applyModifiers()`. */
+  setModifier(name: string, value: number): void;
+  /** Removes every modifier. */
+  clearModifiers(): void;
+  readonly uRange: Float64Array;
+  readonly vRange: Float64Array;
+  readonly increments: Float64Array;
+  /** `[uStart, uEnd]` of a closed track, or `null`. */
+  readonly closedTrack: Float64Array | null;
+  /** `[closed, uStart, uEnd]` as `crgDataSetGetUtilityDataClosedTrack` reports it. */
+  readonly closedTrackReport: Float64Array;
+  /** The v of the long sections. */
+  readonly v: Float64Array;
+  /** The elevation grid, cross section after cross section (`u` outer, `v` inner). */
+  readonly grid: Float32Array;
+  /** comments, road_crg, options, modifiers, mpro, references, format, channels. */
+  readonly header: Record<string, unknown>;
+  /** What `opencrg info` says of the road, the file named `name`. */
+  info(name: string): string;
+  uvToZ<T extends Coordinates>(u: T, v: T, options?: Settings): Answer<T>;
+  xyToZ<T extends Coordinates>(x: T, y: T, options?: Settings): Answer<T>;
+  uvToXy<T extends Coordinates>(u: T, v: T, options?: Settings): [Answer<T>, Answer<T>];
+  xyToUv<T extends Coordinates>(x: T, y: T, options?: Settings): [Answer<T>, Answer<T>];
+  uvToPk<T extends Coordinates>(u: T, v: T, options?: Settings): [Answer<T>, Answer<T>];
+  xyToPk<T extends Coordinates>(x: T, y: T, options?: Settings): [Answer<T>, Answer<T>];
+  /** `[z, nx, ny, nz]`: the elevation and the upward unit normal. */
+  uvToNormal<T extends Coordinates>(u: T, v: T, options?: Settings): [Answer<T>, Answer<T>, Answer<T>, Answer<T>];
+  free(): void;
+}
+
+/** A point of evaluation: options of its own, an x/y search history. */
+export class ContactPoint {
+  constructor(road: Road, options?: Settings);
+  setOption(name: string, value: number): void;
+  readonly options: Settings;
+  /** 1 for each point of the last call the library refused (the C API's return code 0). */
+  readonly refused: Uint8Array;
+  uvToZ<T extends Coordinates>(u: T, v: T): Answer<T>;
+  xyToZ<T extends Coordinates>(x: T, y: T): Answer<T>;
+  uvToXy<T extends Coordinates>(u: T, v: T): [Answer<T>, Answer<T>];
+  xyToUv<T extends Coordinates>(x: T, y: T): [Answer<T>, Answer<T>];
+  uvToPk<T extends Coordinates>(u: T, v: T): [Answer<T>, Answer<T>];
+  xyToPk<T extends Coordinates>(x: T, y: T): [Answer<T>, Answer<T>];
+  uvToNormal<T extends Coordinates>(u: T, v: T): [Answer<T>, Answer<T>, Answer<T>, Answer<T>];
+  free(): void;
+}
+
+/** The ground at world points. */
+export interface Ground<T extends Coordinates> {
+  z: Answer<T>;
+  friction: Answer<T>;
+  /** The road's index into `roadIds` (-1 off every road). */
+  road: Answer<T>;
+  lane: Answer<T>;
+  s: Answer<T>;
+  t: Answer<T>;
+}
+
+/** An OpenDRIVE map with the CRG files its records name laid on. */
+export class OdrMap {
+  private constructor();
+  /** Reads a map held in memory with its CRG files (`{name: bytes}`). */
+  static fromBytes(bytes: Uint8Array, files?: Record<string, Uint8Array>, name?: string): OdrMap;
+  ground<T extends Coordinates>(x: T, y: T): Ground<T>;
+  normal<T extends Coordinates>(x: T, y: T): [Answer<T>, Answer<T>, Answer<T>];
+  stToXyz<T extends Coordinates>(road: string, s: T, t: T): [Answer<T>, Answer<T>, Answer<T>];
+  /** The checker's findings (empty when clean). */
+  check(): string[];
+  /** What `opencrg odr info` says. */
+  info(): string;
+  readonly roadIds: string[];
+  readonly roadLengths: Float64Array;
+  free(): void;
+}
+
+/** OpenDRIVE maps. */
+export const odr: { Map: typeof OdrMap };

@@ -1,0 +1,74 @@
+// The npm package's API in Node: numbers and arrays in and out, NaN and `refused` where
+// the library refuses, options and modifiers by keyword in any case, errors that are
+// `Error`s with the command's message (and the next load works), a road's file
+// references from the files given, and the same answers as the opencrg command.
+//   OPENCRG_CLI=target/release/opencrg node api.mjs PACKAGE EXAMPLES
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+
+const [pkg, examples] = process.argv.slice(2);
+const { Road, ContactPoint, odr } = await import(pathToFileURL(join(pkg, 'index.js')).href);
+const cli = (args, input) => execFileSync(process.env.OPENCRG_CLI, args, { input, encoding: 'utf8' });
+const bytes = readFileSync(join(examples, 'demo_road.crg'));
+
+// A damaged file: an Error with the command's message; the next load works.
+const garbage = new Uint8Array([0, 1, 2, 36, 36, 36, 36, 10, 120]);
+assert.throws(() => Road.fromBytes(garbage, 'garbage.crg'), (e) => e instanceof Error && /garbage\.crg/.test(e.message));
+const road = Road.fromBytes(bytes, 'demo_road.crg');
+road.check();
+road.applyModifiers();
+assert.deepEqual([...road.uRange], [0, 120]);
+assert.equal(road.closedTrack, null);
+assert.equal(road.header.format, 'LRFI');
+assert.equal(road.grid.length, 241 * 25);
+assert.match(road.info('demo_road.crg'), /241 cross sections x 25 long sections/);
+
+// Numbers in, numbers out; arrays in, Float64Arrays out; the command's answers.
+const u = Float64Array.from({ length: 50 }, (_, i) => -5 + i * 2.7);
+const v = Float64Array.from({ length: 50 }, (_, i) => -3.5 + (i % 15) * 0.5);
+const z = road.uvToZ(u, v);
+assert.ok(z instanceof Float64Array && z.length === 50);
+assert.equal(typeof road.uvToZ(10, 0.5), 'number');
+const lines = cli(['eval', join(examples, 'demo_road.crg')], [...u].map((a, i) => `${a} ${v[i]}\n`).join(''));
+const rows = lines.trim().split('\n').slice(1).map((l) => l.split(',').map(Number));
+// (Within 1e-9 m: the platform's sine and cosine may differ from glibc's in the last bit,
+// see docs/web.md.)
+const close = (a, b) => assert.ok(Math.abs(a - b) <= 1e-9 || (Number.isNaN(a) && Number.isNaN(b)), `${a} against ${b}`);
+const [x, y] = road.uvToXy(u, v);
+rows.forEach(([, , cx, cy, cz], i) => {
+  close(x[i], cx);
+  close(y[i], cy);
+  close(z[i], cz);
+});
+
+// Options by keyword in any case; a refusal is NaN, and `refused` says which.
+const cp = new ContactPoint(road, { border_mode_u: 0, Border_Mode_V: 0 });
+assert.ok(Number.isNaN(cp.uvToZ(-10, 0)));
+assert.deepEqual([...cp.refused], [1]);
+assert.ok(!Number.isNaN(cp.uvToZ(10, 0)));
+assert.deepEqual([...cp.refused], [0]);
+assert.throws(() => new ContactPoint(road, { BORDER_MODE_W: 1 }), /unknown option 'BORDER_MODE_W'/);
+assert.throws(() => road.setModifier('SCALE_Q', 1), /unknown modifier 'SCALE_Q'/);
+road.setModifier('scale_z_grid', 2);
+assert.throws(() => road.uvToZ([1, 2], [1]), /u has 2 values, v 1/);
+
+// File references from the files given.
+const top = new TextEncoder().encode('$ROAD_CRG_FILE\n roads/demo_road.crg\n$\n');
+const referencing = Road.fromBytes(top, 'top.crg', { files: { 'roads/demo_road.crg': bytes } });
+assert.equal(referencing.grid.length, 241 * 25);
+assert.throws(() => Road.fromBytes(top, 'top.crg', { files: {} }), /demo_road\.crg/);
+
+// A map from bytes with its CRG file.
+const map = odr.Map.fromBytes(readFileSync(join(examples, 'demo_map.xodr')), { 'demo_road.crg': bytes }, 'demo_map.xodr');
+assert.deepEqual(map.roadIds, ['1', '2']);
+assert.deepEqual(map.check(), []);
+const g = map.ground(20, -2);
+const [ez, ef, eroad, es, et] = cli(['odr', 'eval', join(examples, 'demo_map.xodr')], '20 -2\n').trim().split(' ');
+assert.equal(map.roadIds[g.road], eroad);
+[[g.z, ez], [g.friction, ef], [g.s, es], [g.t, et]].forEach(([a, b]) => close(a, Number(b)));
+assert.ok(Number.isNaN(map.ground(1e6, 1e6).z));
+assert.throws(() => odr.Map.fromBytes(readFileSync(join(examples, 'demo_map.xodr')), {}), /demo_road\.crg/);
+console.log('npm package API: ok');

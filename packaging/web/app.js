@@ -1,0 +1,272 @@
+// The page: opens a CRG file, or an OpenDRIVE map with its CRG files, in the browser (the
+// npm package's WebAssembly), shows what `opencrg info` / `odr info` say and a top view
+// coloured by height, and reads the surface where it is clicked. `?road=URL&probe=X,Y`
+// opens a road or map by URL (a map's CRG files relative to it) and writes the answer at
+// x/y into #probe: "z u v" for a CRG file, "z friction road s t" for a map.
+import { ContactPoint, Road, odr } from './index.js';
+
+const $ = (id) => document.getElementById(id);
+let shown = null; // { kind: 'road', road, cp } or { kind: 'map', map }; the view's frame
+
+function fail(e) {
+  $('error').textContent = e instanceof Error ? e.message : String(e);
+}
+
+/** Opens files: `{name: Uint8Array}`. */
+function open(files) {
+  $('error').textContent = '';
+  const names = Object.keys(files);
+  const xodr = names.find((n) => n.toLowerCase().endsWith('.xodr'));
+  let next;
+  if (xodr) {
+    const crg = Object.fromEntries(names.filter((n) => n !== xodr).map((n) => [n, files[n]]));
+    const map = odr.Map.fromBytes(files[xodr], crg, xodr);
+    next = { kind: 'map', map, name: xodr };
+    $('info').textContent = map.info() + findings(map.check());
+  } else {
+    const name = names.find((n) => n.toLowerCase().endsWith('.crg')) ?? names[0];
+    if (!name) throw new Error('no file given');
+    const road = Road.fromBytes(files[name], name, { files });
+    let warning = '';
+    try {
+      road.check();
+    } catch (e) {
+      warning = `\ncheck: ${e.message}`;
+    }
+    road.applyModifiers();
+    next = { kind: 'road', road, cp: new ContactPoint(road), name };
+    $('info').textContent = road.info(name) + warning;
+  }
+  shown = next;
+  draw();
+}
+
+function findings(list) {
+  return list.length ? `\nfindings:\n${list.join('\n')}` : '';
+}
+
+/** The x/y extent of what is shown: [x0, x1, y0, y1]. */
+function extent() {
+  const xs = [];
+  const ys = [];
+  if (shown.kind === 'road') {
+    const [u0, u1] = shown.road.uRange;
+    const [v0, v1] = shown.road.vRange;
+    const n = 400;
+    const u = Float64Array.from({ length: 2 * n }, (_, i) => u0 + ((u1 - u0) * (i % n)) / (n - 1));
+    const v = Float64Array.from({ length: 2 * n }, (_, i) => (i < n ? v0 : v1));
+    const [x, y] = shown.road.uvToXy(u, v);
+    xs.push(...x);
+    ys.push(...y);
+  } else {
+    const ids = shown.map.roadIds;
+    const lengths = shown.map.roadLengths;
+    ids.forEach((id, k) => {
+      const n = 50;
+      const s = Float64Array.from({ length: n }, (_, i) => (lengths[k] * i) / (n - 1));
+      const [x, y] = shown.map.stToXyz(id, s, new Float64Array(n));
+      for (let i = 0; i < n; i++) if (Number.isFinite(x[i])) (xs.push(x[i]), ys.push(y[i]));
+    });
+  }
+  const pad = 0.04;
+  const least = (a) => a.reduce((m, v) => Math.min(m, v), Infinity);
+  const most = (a) => a.reduce((m, v) => Math.max(m, v), -Infinity);
+  let [x0, x1, y0, y1] = [least(xs), most(xs), least(ys), most(ys)];
+  const [dx, dy] = [x1 - x0 || 1, y1 - y0 || 1];
+  return [x0 - pad * dx - 10, x1 + pad * dx + 10, y0 - pad * dy - 10, y1 + pad * dy + 10];
+}
+
+/** Heights at points (NaN off the road). */
+function heights(x, y) {
+  if (shown.kind === 'map') return shown.map.ground(x, y).z;
+  const [u, v] = shown.cp.xyToUv(x, y);
+  const z = shown.cp.xyToZ(x, y);
+  const [u0, u1] = shown.road.uRange;
+  const [v0, v1] = shown.road.vRange;
+  return z.map((h, i) => (u[i] >= u0 && u[i] <= u1 && v[i] >= v0 && v[i] <= v1 ? h : NaN));
+}
+
+function colour(t) {
+  // From blue over green and yellow to red.
+  const stops = [[49, 54, 149], [69, 117, 180], [116, 173, 209], [171, 217, 233], [254, 224, 144], [253, 174, 97], [244, 109, 67], [165, 0, 38]];
+  const f = Math.min(Math.max(t, 0), 1) * (stops.length - 1);
+  const i = Math.min(Math.floor(f), stops.length - 2);
+  const w = f - i;
+  return stops[i].map((c, k) => Math.round(c + w * (stops[i + 1][k] - c)));
+}
+
+function draw() {
+  const canvas = $('top');
+  const g = canvas.getContext('2d');
+  const [W, H, left, bottom] = [canvas.width, canvas.height, 70, 40];
+  const [pw, ph] = [W - left - 120, H - bottom - 10];
+  let [x0, x1, y0, y1] = extent();
+  const m = Math.max((x1 - x0) / pw, (y1 - y0) / ph);
+  [x1, y1] = [x0 + m * pw, y0 + m * ph];
+  shown.frame = { x0, y1, m, left, top: 10, pw, ph };
+  const step = 2;
+  const [nx, ny] = [Math.ceil(pw / step), Math.ceil(ph / step)];
+  const x = new Float64Array(nx * ny);
+  const y = new Float64Array(nx * ny);
+  for (let r = 0; r < ny; r++) {
+    for (let c = 0; c < nx; c++) {
+      // Rows in turn, each the other way, so that a search follows its neighbour.
+      const cc = r % 2 ? nx - 1 - c : c;
+      x[r * nx + c] = x0 + (cc + 0.5) * step * m;
+      y[r * nx + c] = y1 - (r + 0.5) * step * m;
+    }
+  }
+  const z = heights(x, y);
+  let [lo, hi] = [Infinity, -Infinity];
+  for (const h of z) if (Number.isFinite(h)) [lo, hi] = [Math.min(lo, h), Math.max(hi, h)];
+  if (lo > hi) [lo, hi] = [0, 1];
+  g.fillStyle = '#fff';
+  g.fillRect(0, 0, W, H);
+  const image = g.createImageData(pw, ph);
+  for (let r = 0; r < ny; r++) {
+    for (let c = 0; c < nx; c++) {
+      const h = z[r * nx + c];
+      if (!Number.isFinite(h)) continue;
+      const cc = r % 2 ? nx - 1 - c : c;
+      const [R, G, B] = colour((h - lo) / (hi - lo || 1));
+      for (let dy = 0; dy < step; dy++) {
+        for (let dx = 0; dx < step; dx++) {
+          const [px, py] = [cc * step + dx, r * step + dy];
+          if (px >= pw || py >= ph) continue;
+          const o = 4 * (py * pw + px);
+          [image.data[o], image.data[o + 1], image.data[o + 2], image.data[o + 3]] = [R, G, B, 255];
+        }
+      }
+    }
+  }
+  g.putImageData(image, left, 10);
+  axes(g, { x0, x1, y0, y1, left, top: 10, pw, ph });
+  bar(g, lo, hi, left + pw + 20, 10, ph);
+}
+
+function ticks(a, b) {
+  const raw = (b - a) / 6;
+  const p = 10 ** Math.floor(Math.log10(raw));
+  const d = [1, 2, 5, 10].map((k) => k * p).find((k) => k >= raw);
+  const out = [];
+  for (let t = Math.ceil(a / d) * d; t <= b; t += d) out.push(t);
+  return out;
+}
+
+function axes(g, f) {
+  g.strokeStyle = '#444';
+  g.fillStyle = '#222';
+  g.font = '12px sans-serif';
+  g.strokeRect(f.left, f.top, f.pw, f.ph);
+  g.textAlign = 'center';
+  for (const t of ticks(f.x0, f.x1)) {
+    const px = f.left + ((t - f.x0) / (f.x1 - f.x0)) * f.pw;
+    g.beginPath(), g.moveTo(px, f.top + f.ph), g.lineTo(px, f.top + f.ph + 5), g.stroke();
+    g.fillText(`${+t.toFixed(6)}`, px, f.top + f.ph + 18);
+  }
+  g.fillText('x [m]', f.left + f.pw / 2, f.top + f.ph + 34);
+  g.textAlign = 'right';
+  for (const t of ticks(f.y0, f.y1)) {
+    const py = f.top + ((f.y1 - t) / (f.y1 - f.y0)) * f.ph;
+    g.beginPath(), g.moveTo(f.left - 5, py), g.lineTo(f.left, py), g.stroke();
+    g.fillText(`${+t.toFixed(6)}`, f.left - 8, py + 4);
+  }
+  g.save(), g.translate(14, f.top + f.ph / 2), g.rotate(-Math.PI / 2), g.textAlign = 'center';
+  g.fillText('y [m]', 0, 0), g.restore();
+}
+
+function bar(g, lo, hi, x, top, h) {
+  for (let i = 0; i < h; i++) {
+    const [R, G, B] = colour(1 - i / h);
+    g.fillStyle = `rgb(${R},${G},${B})`;
+    g.fillRect(x, top + i, 16, 1);
+  }
+  g.fillStyle = '#222';
+  g.textAlign = 'left';
+  g.fillText(`${hi.toFixed(3)} m`, x + 20, top + 10);
+  g.fillText(`${lo.toFixed(3)} m`, x + 20, top + h);
+  g.fillText('z', x + 4, top + h + 16);
+}
+
+/** The answer at (x, y): "z u v" for a road, "z friction road s t" for a map. */
+function answer(x, y) {
+  if (shown.kind === 'road') {
+    const cp = new ContactPoint(shown.road);
+    const [u, v] = cp.xyToUv(x, y);
+    const z = cp.xyToZ(x, y);
+    return `${z} ${u} ${v}`;
+  }
+  const g = shown.map.ground(x, y);
+  const road = g.road >= 0 ? shown.map.roadIds[g.road] : '-';
+  return `${g.z} ${g.friction} ${road} ${g.s} ${g.t}`;
+}
+
+$('top').addEventListener('click', (event) => {
+  if (!shown) return;
+  const rect = event.target.getBoundingClientRect();
+  const f = shown.frame;
+  const px = ((event.clientX - rect.left) * event.target.width) / rect.width - f.left;
+  const py = ((event.clientY - rect.top) * event.target.height) / rect.height - f.top;
+  const [x, y] = [f.x0 + px * f.m, f.y1 - py * f.m];
+  const a = answer(x, y).split(' ');
+  $('readout').textContent =
+    shown.kind === 'road'
+      ? `x ${x.toFixed(3)} y ${y.toFixed(3)} z ${(+a[0]).toFixed(4)} u ${(+a[1]).toFixed(3)} v ${(+a[2]).toFixed(3)}`
+      : `x ${x.toFixed(3)} y ${y.toFixed(3)} z ${(+a[0]).toFixed(4)} friction ${a[1]} road ${a[2]} s ${(+a[3]).toFixed(3)} t ${(+a[4]).toFixed(3)}`;
+});
+
+async function read(fileList) {
+  const files = {};
+  for (const f of fileList) files[f.webkitRelativePath || f.name] = new Uint8Array(await f.arrayBuffer());
+  return files;
+}
+
+for (const id of ['files', 'folder']) {
+  $(id).addEventListener('change', async (e) => {
+    try {
+      open(await read(e.target.files));
+    } catch (err) {
+      fail(err);
+    }
+  });
+}
+const drop = $('drop');
+drop.addEventListener('dragover', (e) => (e.preventDefault(), drop.classList.add('over')));
+drop.addEventListener('dragleave', () => drop.classList.remove('over'));
+drop.addEventListener('drop', async (e) => {
+  e.preventDefault();
+  drop.classList.remove('over');
+  try {
+    open(await read(e.dataTransfer.files));
+  } catch (err) {
+    fail(err);
+  }
+});
+
+// ?road=URL&probe=X,Y
+const params = new URLSearchParams(location.search);
+if (params.get('road')) {
+  try {
+    const url = new URL(params.get('road'), location.href);
+    const fetchBytes = async (u) => {
+      const r = await fetch(u);
+      if (!r.ok) throw new Error(`${u}: ${r.status} ${r.statusText}`);
+      return new Uint8Array(await r.arrayBuffer());
+    };
+    const name = decodeURIComponent(url.pathname.split('/').pop());
+    const files = { [name]: await fetchBytes(url) };
+    if (name.toLowerCase().endsWith('.xodr')) {
+      const text = new TextDecoder().decode(files[name]);
+      for (const m of text.matchAll(/<CRG\b[^>]*\bfile="([^"]+)"/g)) {
+        files[m[1]] = await fetchBytes(new URL(m[1], url));
+      }
+    }
+    open(files);
+    if (params.get('probe')) {
+      const [x, y] = params.get('probe').split(',').map(Number);
+      $('probe').textContent = answer(x, y);
+    }
+  } catch (err) {
+    fail(err);
+  }
+}

@@ -1,0 +1,86 @@
+"""The web page in headless Chromium, served from WEB on loopback: `?road=...&probe=...`
+for the demo road and the demo map (its CRG file fetched beside it) answers what the
+native command answers (within 1e-9 m), and the top view is drawn (a screenshot with
+many pixels in the height colours).
+
+usage: python3 test_page.py WEB OPENCRG EXAMPLES
+"""
+
+import functools
+import http.server
+import math
+import os
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import threading
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "crates/opencrg-cli/tests"))
+from check_view import pixels  # noqa: E402
+
+web, opencrg, examples = map(pathlib.Path, sys.argv[1:4])
+root = pathlib.Path(tempfile.mkdtemp())
+shutil.copytree(web, root / "web")
+(root / "data").mkdir()
+for name in ("demo_road.crg", "demo_map.xodr"):
+    shutil.copy(examples / name, root / "data" / name)
+class Quiet(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, *args):
+        pass
+
+
+handler = functools.partial(Quiet, directory=str(root))
+server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+threading.Thread(target=server.serve_forever, daemon=True).start()
+base = f"http://127.0.0.1:{server.server_address[1]}/web/index.html"
+
+
+def chromium(url, *args):
+    profile = tempfile.mkdtemp()
+    out = subprocess.run(
+        ["chromium", "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+         "--disable-component-update", "--disable-sync", "--no-first-run", f"--user-data-dir={profile}",
+         "--window-size=1400,800", "--virtual-time-budget=8000", *args, url],
+        capture_output=True, text=True, timeout=120)
+    shutil.rmtree(profile, ignore_errors=True)
+    return out.stdout
+
+
+def probe(query):
+    dom = chromium(f"{base}?{query}", "--dump-dom")
+    error = re.search(r'id="error">([^<]*)<', dom)
+    assert error is None or not error[1].strip(), f"the page says: {error[1]}"
+    return re.search(r'id="probe">([^<]*)<', dom)[1].split()
+
+
+def close(a, b):
+    a, b = float(a), float(b)
+    assert (math.isnan(a) and math.isnan(b)) or abs(a - b) <= 1e-9, (a, b)
+
+
+# The road: z u v against `opencrg eval --xy` (x,y,u,v,z,...).
+got = probe("road=../data/demo_road.crg&probe=50,3")
+row = subprocess.run([str(opencrg), "eval", "--xy", str(examples / "demo_road.crg")], input="50 3\n",
+                     capture_output=True, text=True, check=True).stdout.splitlines()[1].split(",")
+for ours, theirs in zip(got, (row[4], row[2], row[3])):
+    close(ours, theirs)
+# The map: z friction road s t against `opencrg odr eval`.
+got = probe("road=../data/demo_map.xodr&probe=20,-2")
+native = subprocess.run([str(opencrg), "odr", "eval", str(examples / "demo_map.xodr")], input="20 -2\n",
+                        capture_output=True, text=True, check=True).stdout.split()
+assert got[2] == native[2], (got, native)
+for k in (0, 1, 3, 4):
+    close(got[k], native[k])
+# The top view drawn: many pixels of the canvas in the height colours (saturated).
+shot = root / "page.png"
+chromium(f"{base}?road=../data/demo_map.xodr", f"--screenshot={shot}")
+rows = pixels(shot)
+coloured = sum(1 for r in rows for (R, G, B) in r if max(R, G, B) - min(R, G, B) > 60)
+total = sum(len(r) for r in rows)
+assert coloured > 0.02 * total, f"{coloured} of {total} pixels coloured"
+print(f"web page: road and map probes as the command answers; top view drawn ({100 * coloured / total:.1f} % coloured)")
+server.shutdown()
+shutil.rmtree(root, ignore_errors=True)
