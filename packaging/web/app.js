@@ -12,8 +12,9 @@ function fail(e) {
   $('error').textContent = e instanceof Error ? e.message : String(e);
 }
 
-/** Opens files: `{name: Uint8Array}`. */
+/** Opens files: `{name: Uint8Array}`; how long reading and drawing took goes to #timing. */
 function open(files) {
+  const started = performance.now();
   $('error').textContent = '';
   const names = Object.keys(files);
   const xodr = names.find((n) => n.toLowerCase().endsWith('.xodr'));
@@ -37,8 +38,10 @@ function open(files) {
     next = { kind: 'road', road, cp: new ContactPoint(road), name };
     $('info').textContent = road.info(name) + warning;
   }
+  const read = performance.now();
   shown = next;
   draw();
+  $('timing').textContent = `read ${(read - started).toFixed(0)} ms, drawn ${(performance.now() - read).toFixed(0)} ms`;
 }
 
 function findings(list) {
@@ -246,6 +249,7 @@ drop.addEventListener('drop', async (e) => {
 // ?road=URL&probe=X,Y
 const params = new URLSearchParams(location.search);
 if (params.get('road')) {
+  const started = performance.now();
   try {
     const url = new URL(params.get('road'), location.href);
     const fetchBytes = async (u) => {
@@ -261,7 +265,9 @@ if (params.get('road')) {
         files[m[1]] = await fetchBytes(new URL(m[1], url));
       }
     }
+    const fetched = performance.now();
     open(files);
+    $('timing').textContent = `fetched ${(fetched - started).toFixed(0)} ms, ${$('timing').textContent}`;
     if (params.get('probe')) {
       const [x, y] = params.get('probe').split(',').map(Number);
       $('probe').textContent = answer(x, y);
