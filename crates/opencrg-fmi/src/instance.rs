@@ -65,6 +65,26 @@ pub enum Act {
     Get,
 }
 
+/// The value references of the last call that named only wheel quantities, decoded: an
+/// importer passes the same array every step, which is then compared, not decoded again.
+#[derive(Default)]
+struct Decoded {
+    vrs: Vec<u32>,
+    quantities: Vec<(usize, Quantity)>,
+}
+
+impl Decoded {
+    /// `vrs` decoded by `decode` (which knows each of them).
+    fn of(vrs: &[u32], decode: impl Fn(u32) -> Option<(usize, Quantity)>) -> Decoded {
+        let quantities = vrs.iter().filter_map(|&vr| decode(vr)).collect::<Vec<_>>();
+        if quantities.len() == vrs.len() {
+            Decoded { vrs: vrs.to_vec(), quantities }
+        } else {
+            Decoded::default()
+        }
+    }
+}
+
 /// A parameter's value.
 #[derive(Debug, Clone, PartialEq)]
 struct Parameters {
@@ -94,6 +114,9 @@ pub struct Instance {
     pub logging_on: bool,
     /// What the last string get handed out (valid until the next call).
     strings: Vec<CString>,
+    /// The last gets and sets of wheel quantities, decoded.
+    last_get: Decoded,
+    last_set: Decoded,
 }
 
 impl Instance {
@@ -147,6 +170,8 @@ impl Instance {
             logger,
             logging_on: false,
             strings: Vec::new(),
+            last_get: Decoded::default(),
+            last_set: Decoded::default(),
         })
     }
 
@@ -232,11 +257,26 @@ impl Instance {
     #[inline(always)]
     pub fn reals(&mut self, vrs: &[u32], out: &mut [f64]) -> Result<(), Refused> {
         let readable = matches!(self.state, State::Initialization | State::Event | State::ContinuousTime | State::Step);
+        let friction = self.parameters.friction_default;
+        if readable && vrs == self.last_get.vrs.as_slice() {
+            let Instance { last_get, wheels, .. } = self;
+            for (&(i, q), value) in last_get.quantities.iter().zip(out) {
+                *value = wheels.real(i, q, friction);
+            }
+            return Ok(());
+        }
+        let mut all_wheels = readable;
         for (&vr, value) in vrs.iter().zip(out) {
             *value = match self.wheel_real(vr) {
-                Some((i, q)) if readable => self.wheels.real(i, q, self.parameters.friction_default),
-                _ => self.real_otherwise(vr)?,
+                Some((i, q)) if readable => self.wheels.real(i, q, friction),
+                _ => {
+                    all_wheels = false;
+                    self.real_otherwise(vr)?
+                }
             };
+        }
+        if all_wheels {
+            self.last_get = Decoded::of(vrs, |vr| self.wheel_real(vr));
         }
         Ok(())
     }
@@ -264,16 +304,35 @@ impl Instance {
     #[inline(always)]
     pub fn set_reals(&mut self, vrs: &[u32], values: &[f64]) -> Result<(), Refused> {
         let settable = !matches!(self.state, State::Terminated | State::Broken);
+        if settable && vrs == self.last_set.vrs.as_slice() {
+            let Instance { last_set, wheels, .. } = self;
+            for (&(i, q), &value) in last_set.quantities.iter().zip(values) {
+                wheels.set(i, q, value);
+            }
+            return Ok(());
+        }
+        let mut all_inputs = settable;
         for (&vr, &value) in vrs.iter().zip(values) {
-            let (wheel, k) = (vr / variables::WHEEL_STRIDE, vr % variables::WHEEL_STRIDE);
-            if wheel.wrapping_sub(1) < self.wheel_count && k <= Quantity::Y as u32 && settable {
-                let q = if k == Quantity::X as u32 { Quantity::X } else { Quantity::Y };
-                self.wheels.set(wheel as usize - 1, q, value);
-            } else {
-                self.set_real_otherwise(vr, value)?;
+            match self.wheel_input(vr) {
+                Some((i, q)) if settable => self.wheels.set(i, q, value),
+                _ => {
+                    all_inputs = false;
+                    self.set_real_otherwise(vr, value)?;
+                }
             }
         }
+        if all_inputs {
+            self.last_set = Decoded::of(vrs, |vr| self.wheel_input(vr));
+        }
         Ok(())
+    }
+
+    /// The wheel (0-based) and quantity of an input (x or y) `vr` names, if it does.
+    #[inline(always)]
+    fn wheel_input(&self, vr: u32) -> Option<(usize, Quantity)> {
+        let (wheel, k) = (vr / variables::WHEEL_STRIDE, vr % variables::WHEEL_STRIDE);
+        let known = wheel.wrapping_sub(1) < self.wheel_count && k <= Quantity::Y as u32;
+        known.then(|| (wheel as usize - 1, if k == Quantity::X as u32 { Quantity::X } else { Quantity::Y }))
     }
 
     /// [`Instance::set_reals`] off the hot path: parameters, refusals.
