@@ -40,6 +40,16 @@ export class Road {
   readonly grid: Float32Array;
   /** comments, road_crg, options, modifiers, mpro, references, format, channels. */
   readonly header: Record<string, unknown>;
+  /** The roughness of wheel tracks (`tracks`: their v; default -0.85, 0, 0.85 m), as `opencrg roughness` gives it. */
+  roughness(tracks?: Float64Array | number[], segment?: number): Array<{
+    v: number;
+    iri: number;
+    segments: Array<{ uStart: number; uEnd: number; iri: number | null }>;
+    gdN0: number;
+    w: number;
+    iso8608: string;
+    skipped: number;
+  }>;
   /** What `opencrg info` says of the road, the file named `name`. */
   info(name: string): string;
   uvToZ<T extends Coordinates>(u: T, v: T, options?: Settings): Answer<T>;

@@ -41,6 +41,12 @@ function open(files) {
   const read = performance.now();
   shown = next;
   draw();
+  if (shown.kind === 'road') {
+    const [u0, u1] = shown.road.uRange;
+    sections(0.5 * (u0 + u1), 0);
+    rough();
+  }
+  $('road-only').style.display = shown.kind === 'road' ? '' : 'none';
   $('timing').textContent = `read ${(read - started).toFixed(0)} ms, drawn ${(performance.now() - read).toFixed(0)} ms`;
 }
 
@@ -156,7 +162,7 @@ function ticks(a, b) {
   return out;
 }
 
-function axes(g, f) {
+function axes(g, f, xLabel = 'x [m]', yLabel = 'y [m]') {
   g.strokeStyle = '#444';
   g.fillStyle = '#222';
   g.font = '12px sans-serif';
@@ -167,7 +173,7 @@ function axes(g, f) {
     g.beginPath(), g.moveTo(px, f.top + f.ph), g.lineTo(px, f.top + f.ph + 5), g.stroke();
     g.fillText(`${+t.toFixed(6)}`, px, f.top + f.ph + 18);
   }
-  g.fillText('x [m]', f.left + f.pw / 2, f.top + f.ph + 34);
+  g.fillText(xLabel, f.left + f.pw / 2, f.top + f.ph + 34);
   g.textAlign = 'right';
   for (const t of ticks(f.y0, f.y1)) {
     const py = f.top + ((f.y1 - t) / (f.y1 - f.y0)) * f.ph;
@@ -175,7 +181,7 @@ function axes(g, f) {
     g.fillText(`${+t.toFixed(6)}`, f.left - 8, py + 4);
   }
   g.save(), g.translate(14, f.top + f.ph / 2), g.rotate(-Math.PI / 2), g.textAlign = 'center';
-  g.fillText('y [m]', 0, 0), g.restore();
+  g.fillText(yLabel, 0, 0), g.restore();
 }
 
 function bar(g, lo, hi, x, top, h) {
@@ -189,6 +195,62 @@ function bar(g, lo, hi, x, top, h) {
   g.fillText(`${hi.toFixed(3)} m`, x + 20, top + 10);
   g.fillText(`${lo.toFixed(3)} m`, x + 20, top + h);
   g.fillText('z', x + 4, top + h + 16);
+}
+
+/** A line chart with axes: `xs`, `ys` (NaN: gaps). */
+function chart(canvas, xs, ys, xLabel, title) {
+  const g = canvas.getContext('2d');
+  const [W, H, left, top, right, bottom] = [canvas.width, canvas.height, 64, 24, 12, 36];
+  const [pw, ph] = [W - left - right, H - top - bottom];
+  let [lo, hi] = [Infinity, -Infinity];
+  for (const y of ys) if (Number.isFinite(y)) [lo, hi] = [Math.min(lo, y), Math.max(hi, y)];
+  if (lo > hi) [lo, hi] = [0, 1];
+  if (hi - lo < 1e-6) [lo, hi] = [lo - 0.001, hi + 0.001];
+  const [x0, x1] = [xs[0], xs[xs.length - 1]];
+  g.fillStyle = '#fff';
+  g.fillRect(0, 0, W, H);
+  g.fillStyle = '#222';
+  g.font = '12px sans-serif';
+  g.textAlign = 'left';
+  g.fillText(title, left, 16);
+  axes(g, { x0, x1, y0: lo, y1: hi, left, top, pw, ph }, xLabel, 'z [m]');
+  g.strokeStyle = '#1f5fa8';
+  g.lineWidth = 1.5;
+  g.beginPath();
+  let pen = false;
+  xs.forEach((x, i) => {
+    const y = ys[i];
+    if (!Number.isFinite(y)) return void (pen = false);
+    const [px, py] = [left + ((x - x0) / (x1 - x0)) * pw, top + ((hi - y) / (hi - lo)) * ph];
+    pen ? g.lineTo(px, py) : g.moveTo(px, py);
+    pen = true;
+  });
+  g.stroke();
+  g.lineWidth = 1;
+}
+
+/** The road's sections along u at `v` and across v at `u`. */
+function sections(u, v) {
+  const [u0, u1] = shown.road.uRange;
+  const [v0, v1] = shown.road.vRange;
+  const n = 600;
+  const us = Float64Array.from({ length: n }, (_, i) => u0 + ((u1 - u0) * i) / (n - 1));
+  const vs = Float64Array.from({ length: n }, (_, i) => v0 + ((v1 - v0) * i) / (n - 1));
+  chart($('along'), us, shown.road.uvToZ(us, new Float64Array(n).fill(v)), 'u [m]', `along u at v = ${v.toFixed(3)} m`);
+  chart($('across'), vs, shown.road.uvToZ(new Float64Array(n).fill(u), vs), 'v [m]', `across v at u = ${u.toFixed(3)} m`);
+}
+
+/** The roughness of the default tracks, as `opencrg roughness` gives it. */
+function rough() {
+  try {
+    const lines = ['track v [m]   IRI [m/km]   ISO 8608   Gd(n0) [m³]'];
+    for (const t of shown.road.roughness()) {
+      lines.push(`${t.v.toFixed(2).padStart(11)}   ${t.iri.toFixed(3).padStart(10)}   ${t.iso8608.padStart(8)}   ${t.gdN0.toExponential(3)}`);
+    }
+    $('roughness').textContent = lines.join('\n');
+  } catch (e) {
+    $('roughness').textContent = `roughness: ${e.message}`;
+  }
 }
 
 /** The answer at (x, y): "z u v" for a road, "z friction road s t" for a map. */
@@ -212,6 +274,7 @@ $('top').addEventListener('click', (event) => {
   const py = ((event.clientY - rect.top) * event.target.height) / rect.height - f.top;
   const [x, y] = [f.x0 + px * f.m, f.y1 - py * f.m];
   const a = answer(x, y).split(' ');
+  if (shown.kind === 'road' && Number.isFinite(+a[1])) sections(+a[1], +a[2]);
   $('readout').textContent =
     shown.kind === 'road'
       ? `x ${x.toFixed(3)} y ${y.toFixed(3)} z ${(+a[0]).toFixed(4)} u ${(+a[1]).toFixed(3)} v ${(+a[2]).toFixed(3)}`

@@ -8,6 +8,7 @@ usage: python3 test_page.py WEB OPENCRG EXAMPLES
 
 import functools
 import http.server
+import json
 import math
 import os
 import pathlib
@@ -49,7 +50,11 @@ def chromium(url, *args):
     return out.stdout
 
 
+dom = ""
+
+
 def probe(query):
+    global dom
     dom = chromium(f"{base}?{query}", "--dump-dom")
     error = re.search(r'id="error">([^<]*)<', dom)
     assert error is None or not error[1].strip(), f"the page says: {error[1]}"
@@ -67,6 +72,11 @@ row = subprocess.run([str(opencrg), "eval", "--xy", str(examples / "demo_road.cr
                      capture_output=True, text=True, check=True).stdout.splitlines()[1].split(",")
 for ours, theirs in zip(got, (row[4], row[2], row[3])):
     close(ours, theirs)
+# Its roughness table: the IRI of the command's tracks.
+table = re.search(r'id="roughness">([^<]*)<', dom)[1].splitlines()[1:]
+iri = json.loads(subprocess.run([str(opencrg), "roughness", str(examples / "demo_road.crg"), "--json"],
+                                capture_output=True, text=True, check=True).stdout)["tracks"]
+assert [line.split()[1] for line in table] == [f"{t['iri']:.3f}" for t in iri], (table, iri)
 # The map: z friction road s t against `opencrg odr eval`.
 got = probe("road=../data/demo_map.xodr&probe=20,-2")
 native = subprocess.run([str(opencrg), "odr", "eval", str(examples / "demo_map.xodr")], input="20 -2\n",

@@ -176,6 +176,40 @@ impl Road {
         out
     }
 
+    /// The roughness of wheel tracks as `opencrg roughness` gives it: per track (`tracks`:
+    /// their v, default -0.85, 0 and 0.85 m) `{v, iri, segments: [{uStart, uEnd, iri}],
+    /// gdN0, w, iso8608, skipped}` (IRI in m/km over segments of `segment` m, default 100;
+    /// a segment without data has iri `null`).
+    pub fn roughness(&self, tracks: Option<Vec<f64>>, segment: Option<f64>) -> Result<Array, JsError> {
+        let tracks = tracks.unwrap_or_else(|| opencrg_tools::roughness::DEFAULT_TRACKS.to_vec());
+        let segment = segment.unwrap_or(opencrg_tools::roughness::DEFAULT_SEGMENT);
+        let found = opencrg_tools::roughness::roughness(&self.road, &tracks, segment).map_err(crate::errors::error)?;
+        let out = Array::new();
+        for track in found {
+            let t = Object::new();
+            let put = |o: &Object, k: &str, v: JsValue| {
+                let _ = Reflect::set(o, &k.into(), &v);
+            };
+            put(&t, "v", track.v.into());
+            put(&t, "iri", track.iri.into());
+            let segments = Array::new();
+            for s in &track.segments {
+                let o = Object::new();
+                put(&o, "uStart", s.u_start.into());
+                put(&o, "uEnd", s.u_end.into());
+                put(&o, "iri", s.iri.map_or(JsValue::NULL, JsValue::from));
+                segments.push(&o);
+            }
+            put(&t, "segments", segments.into());
+            put(&t, "gdN0", track.psd.gd_n0.into());
+            put(&t, "w", track.psd.w.into());
+            put(&t, "iso8608", track.psd.class.to_string().into());
+            put(&t, "skipped", track.skipped.into());
+            out.push(&t);
+        }
+        Ok(out)
+    }
+
     /// What `opencrg info` says of the road, the file named `name`.
     pub fn info(&self, name: &str) -> String {
         opencrg_core::info::text(&self.road, name)
