@@ -50,6 +50,8 @@ export class Road {
     iso8608: string;
     skipped: number;
   }>;
+  /** The 3D view of `opencrg view`: one HTML page. */
+  viewPage(name: string, maxVertices?: number): string;
   /** What `opencrg info` says of the road, the file named `name`. */
   info(name: string): string;
   uvToZ<T extends Coordinates>(u: T, v: T, options?: Settings): Answer<T>;
@@ -101,6 +103,8 @@ export class OdrMap {
   stToXyz<T extends Coordinates>(road: string, s: T, t: T): [Answer<T>, Answer<T>, Answer<T>];
   /** The checker's findings (empty when clean). */
   check(): string[];
+  /** The 3D view of `opencrg odr view`: one HTML page. */
+  viewPage(name: string, maxError?: number): string;
   /** What `opencrg odr info` says. */
   info(): string;
   readonly roadIds: string[];

@@ -266,6 +266,23 @@ function answer(x, y) {
   return `${g.z} ${g.friction} ${road} ${g.s} ${g.t}`;
 }
 
+/** The 3D view of `opencrg view` / `opencrg odr view` (the same page) in the frame. */
+function show3d() {
+  const frame = $('view3d');
+  try {
+    frame.srcdoc = shown.kind === 'road' ? shown.road.viewPage(shown.name) : shown.map.viewPage(shown.name);
+    frame.style.display = '';
+    $('top').style.display = 'none';
+  } catch (e) {
+    fail(e);
+  }
+}
+$('show-3d').addEventListener('click', () => shown && show3d());
+$('show-top').addEventListener('click', () => {
+  $('view3d').style.display = 'none';
+  $('top').style.display = '';
+});
+
 $('top').addEventListener('click', (event) => {
   if (!shown) return;
   const rect = event.target.getBoundingClientRect();
@@ -309,7 +326,7 @@ drop.addEventListener('drop', async (e) => {
   }
 });
 
-// ?road=URL&probe=X,Y
+// ?road=URL&probe=X,Y (&view=3d: the 3D view first)
 const params = new URLSearchParams(location.search);
 if (params.get('road')) {
   const started = performance.now();
@@ -331,6 +348,7 @@ if (params.get('road')) {
     const fetched = performance.now();
     open(files);
     $('timing').textContent = `fetched ${(fetched - started).toFixed(0)} ms, ${$('timing').textContent}`;
+    if (params.get('view') === '3d') show3d();
     if (params.get('probe')) {
       const [x, y] = params.get('probe').split(',').map(Number);
       $('probe').textContent = answer(x, y);

@@ -42,7 +42,8 @@ base = f"http://127.0.0.1:{server.server_address[1]}/web/index.html"
 def chromium(url, *args):
     profile = tempfile.mkdtemp()
     out = subprocess.run(
-        ["chromium", "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+        ["chromium", "--headless", "--no-sandbox", "--disable-gpu", "--use-angle=swiftshader",
+         "--enable-unsafe-swiftshader", "--disable-background-networking",
          "--disable-component-update", "--disable-sync", "--no-first-run", f"--user-data-dir={profile}",
          "--window-size=1400,800", "--virtual-time-budget=8000", *args, url],
         capture_output=True, text=True, timeout=120)
@@ -84,13 +85,17 @@ native = subprocess.run([str(opencrg), "odr", "eval", str(examples / "demo_map.x
 assert got[2] == native[2], (got, native)
 for k in (0, 1, 3, 4):
     close(got[k], native[k])
-# The top view drawn: many pixels of the canvas in the height colours (saturated).
-shot = root / "page.png"
-chromium(f"{base}?road=../data/demo_map.xodr", f"--screenshot={shot}")
-rows = pixels(shot)
-coloured = sum(1 for r in rows for (R, G, B) in r if max(R, G, B) - min(R, G, B) > 60)
-total = sum(len(r) for r in rows)
-assert coloured > 0.02 * total, f"{coloured} of {total} pixels coloured"
-print(f"web page: road and map probes as the command answers; top view drawn ({100 * coloured / total:.1f} % coloured)")
+# The top view and the 3D view (the command's viewer, in a frame) drawn: many pixels in
+# the height colours (saturated).
+shares = []
+for query in ("road=../data/demo_map.xodr", "road=../data/demo_road.crg&view=3d"):
+    shot = root / "page.png"
+    chromium(f"{base}?{query}", f"--screenshot={shot}")
+    rows = pixels(shot)
+    coloured = sum(1 for r in rows for (R, G, B) in r if max(R, G, B) - min(R, G, B) > 60)
+    total = sum(len(r) for r in rows)
+    assert coloured > 0.02 * total, f"{query}: {coloured} of {total} pixels coloured"
+    shares.append(f"{100 * coloured / total:.1f} %")
+print(f"web page: road and map probes as the command answers, its roughness; top and 3D views drawn ({', '.join(shares)} coloured)")
 server.shutdown()
 shutil.rmtree(root, ignore_errors=True)

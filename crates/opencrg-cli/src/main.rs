@@ -399,9 +399,9 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
             let (u, v) = ranges.parse()?;
             let cp = contact_point(&road, &options)?;
             let name = road.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-            let done = view::view(&cp, &name, &output, u, v, max_vertices, &budget)
+            let shown = opencrg_tools::view::road_view(&cp, &name, u, v, max_vertices, &budget)
                 .map_err(|e| format!("{}: {e}", road.display()))?;
-            eprintln!("{done}");
+            eprintln!("{}", view::write(&shown, &output)?);
         }
         Command::Roughness { road, tracks, segment, json, plot } => {
             let mut r = load(&road)?;

@@ -7,7 +7,7 @@ use clap::Subcommand;
 use opencrg_core::Budget;
 use opencrg_odr::{Map, Surface};
 use opencrg_tools::map_mesh::{map_mesh, MeshOptions};
-use opencrg_tools::mesh_files::{write_mesh, write_whole, MeshFormat};
+use opencrg_tools::mesh_files::{write_mesh, MeshFormat};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -174,27 +174,9 @@ fn export(path: &Path, output: &Path, options: &MeshOptions, budget: &Budget) ->
 
 fn view(path: &Path, output: &Path, options: &MeshOptions, budget: &Budget) -> Result<(), String> {
     let surface = Arc::new(Surface::load(path).map_err(|e| e.to_string())?);
-    let mesh = map_mesh(&surface, options, budget).map_err(|e| e.to_string())?;
-    if mesh.triangles.is_empty() {
-        return Err(format!("{}: no lane of the roads chosen to show", path.display()));
-    }
-    let chosen = |road: usize| options.roads.as_ref().is_none_or(|ids| ids.contains(&surface.map().roads[road].id));
-    let outlines: Vec<Vec<[f64; 3]>> =
-        surface.crg_outlines().into_iter().filter(|(road, ..)| chosen(*road)).map(|(_, _, line)| line).collect();
-    let ids: Vec<&str> = surface.map().roads.iter().map(|r| r.id.as_str()).collect();
-    let names = serde_json::json!({ "road": ids }).to_string();
     let name = path.file_name().map_or_else(|| path.display().to_string(), |n| n.to_string_lossy().into_owned());
-    let info = format!(
-        "{} &middot; {} roads, {} CRG records (outlined) &middot; {} vertices, {} triangles",
-        crate::view::escape(&name),
-        surface.map().roads.len(),
-        outlines.len(),
-        mesh.positions.len(),
-        mesh.triangles.len()
-    );
-    let page = crate::view::page(&mesh, &name, &info, &outlines, &names)?;
-    write_whole(output, |w| w.write_all(page.as_bytes())).map_err(|e| e.to_string())?;
-    eprintln!("{}: {} vertices, {} triangles", output.display(), mesh.positions.len(), mesh.triangles.len());
+    let shown = opencrg_tools::view::map_view(&surface, &name, options, budget).map_err(|e| e.to_string())?;
+    eprintln!("{}", crate::view::write(&shown, output)?);
     Ok(())
 }
 

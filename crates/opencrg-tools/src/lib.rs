@@ -11,7 +11,8 @@
 //! Measuring a road: [`iri`], [`psd`] and [`roughness`] (the International Roughness
 //! Index and the ISO 8608 class of wheel tracks). Meshes for 3D tools: [`mesh`] (the
 //! grid), [`simplify`] (within an error bound), [`map_mesh`] (the drivable surface of an
-//! OpenDRIVE map), written by [`mesh_files`]. A road or a map as an FMU for simulation
+//! OpenDRIVE map), written by [`mesh_files`]; a road or a map in 3D in one HTML page
+//! ([`view`]). A road or a map as an FMU for simulation
 //! tools: [`fmu`].
 //!
 //! ```no_run
@@ -40,6 +41,7 @@ mod export {
     pub mod mesh;
     pub mod mesh_files;
     pub mod simplify;
+    pub mod view;
 }
 mod make {
     pub(crate) mod append;
@@ -57,7 +59,7 @@ mod make {
 }
 
 pub use analysis::{iri, psd, roughness};
-pub use export::{fmu, map_mesh, mesh, mesh_files, simplify};
+pub use export::{fmu, map_mesh, mesh, mesh_files, simplify, view};
 pub use make::append::append;
 pub use make::channels::{change_channel, ChannelAction, LineChannel};
 pub use make::compare::{compare, Comparison};

@@ -7,6 +7,7 @@
 mod contact;
 mod errors;
 mod evaluate;
+mod limits;
 mod map;
 mod road;
 mod settings;

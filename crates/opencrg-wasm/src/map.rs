@@ -96,6 +96,18 @@ impl Map {
         self.surface.map().roads.iter().map(|r| r.length).collect()
     }
 
+    /// The 3D view of `opencrg odr view` (one HTML page, the map named `name`), CRG
+    /// records outlined, the surface within `maxError` m (default 5 mm).
+    #[wasm_bindgen(js_name = viewPage)]
+    pub fn view_page(&self, name: &str, max_error: Option<f64>) -> Result<String, JsError> {
+        let options =
+            opencrg_tools::map_mesh::MeshOptions { max_error: Some(max_error.unwrap_or(0.005)), ..Default::default() };
+        let budget = opencrg_core::Budget::with_bytes(crate::limits::VIEW_MEMORY);
+        opencrg_tools::view::map_view(&self.surface, name, &options, &budget)
+            .map(|v| v.page)
+            .map_err(crate::errors::error)
+    }
+
     /// What `opencrg odr info` says, as text.
     pub fn info(&self) -> String {
         self.surface.map().info().to_string()

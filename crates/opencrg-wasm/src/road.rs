@@ -210,6 +210,18 @@ impl Road {
         Ok(out)
     }
 
+    /// The 3D view of `opencrg view` (one HTML page, the file named `name`), on every k-th
+    /// cross section where the road has more than `max_vertices` grid nodes (default one
+    /// million).
+    #[wasm_bindgen(js_name = viewPage)]
+    pub fn view_page(&self, name: &str, max_vertices: Option<usize>) -> Result<String, JsError> {
+        let cp = ContactPoint::new(self.road.clone());
+        let budget = opencrg_core::Budget::with_bytes(crate::limits::VIEW_MEMORY);
+        opencrg_tools::view::road_view(&cp, name, None, None, max_vertices.unwrap_or(1_000_000), &budget)
+            .map(|v| v.page)
+            .map_err(crate::errors::error)
+    }
+
     /// What `opencrg info` says of the road, the file named `name`.
     pub fn info(&self, name: &str) -> String {
         opencrg_core::info::text(&self.road, name)
