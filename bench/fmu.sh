@@ -20,7 +20,7 @@ for road in track.crg track.xodr; do
     rm -rf "${dir:?}/$name"
     python3 -m zipfile -e "$dir/$name.fmu" "$dir/$name"
 done
-cc -O2 -Iinclude -Ic-tests/fmu bench/fmu_wheels.c target/release/libopencrg.a -lm -lpthread -ldl -o "$dir/fmu_wheels"
+cc -O2 -Iinclude bench/fmu_wheels.c target/release/libopencrg.a -lm -lpthread -ldl -o "$dir/fmu_wheels"
 out=$(mktemp)
 trap 'rm -f "$out"' EXIT
 for round in $(seq "$rounds"); do

@@ -223,7 +223,7 @@ windows) fmu_folder=win64 fmu_ext=dll host_libs=() ;;
 arm) fmu_folder=aarch64-linux fmu_ext=so host_libs=(-ldl) ;;
 linux) fmu_folder=linux64 fmu_ext=so host_libs=(-ldl) ;;
 esac
-"$cc" "${strict[@]}" -Ic-tests/fmu c-tests/fmu/fmu_host.c "${link_threads[@]}" "${host_libs[@]}" -lm -o "$work/fmu_host$exe"
+"$cc" "${strict[@]}" -Ibench c-tests/fmu/fmu_host.c "${link_threads[@]}" "${host_libs[@]}" -lm -o "$work/fmu_host$exe"
 "${run[@]}" "$work/fmu_host$exe" "$work/fmu/demo_road/binaries/$fmu_folder/demo_road.$fmu_ext" \
     "$work/fmu/demo_road" "$work/fmu/demo_road.points" "$work/fmu/demo_map" "$work/fmu/demo_map.points" \
     >"$work/fmu.log" 2>&1 || { cat "$work/fmu.log"; exit 1; }

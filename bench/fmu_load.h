@@ -52,7 +52,14 @@ struct Fmi2 {
 #ifdef _WIN32
 typedef HMODULE Library;
 static Library library_open(const char *path) { return LoadLibraryA(path); }
-static void *library_symbol(Library l, const char *name) { return (void *)GetProcAddress(l, name); }
+static void *library_symbol(Library l, const char *name)
+{
+    /* (ISO C converts no function pointer to an object pointer: its bytes are copied.) */
+    FARPROC found = GetProcAddress(l, name);
+    void *symbol;
+    memcpy(&symbol, &found, sizeof symbol);
+    return symbol;
+}
 #else
 typedef void *Library;
 static Library library_open(const char *path) { return dlopen(path, RTLD_NOW | RTLD_LOCAL); }
