@@ -9,7 +9,7 @@
  */
 #ifndef OPENCRG_FMU_LOAD_H
 #define OPENCRG_FMU_LOAD_H
-#ifndef _WIN32
+#if !defined(_WIN32) && !defined(_DEFAULT_SOURCE)
 #define _DEFAULT_SOURCE /* realpath */
 #endif
 #include <stdio.h>

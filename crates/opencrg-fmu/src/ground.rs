@@ -259,40 +259,36 @@ impl Wheel {
             return;
         }
         let (x, y) = (self.x, self.y);
-        let mut answer = Answer { known: true, road: -1, friction: f64::NAN, ..Answer::default() };
+        // Written field by field: this runs once per wheel and step.
+        let a = &mut self.answer;
+        (a.known, a.normal, a.pk) = (true, None, None);
+        (a.on_road, a.answered, a.located, a.z, a.road, a.lane) = (false, false, false, 0.0, -1, 0);
         match &mut self.evaluator {
             Evaluator::Crg(cp) => {
-                if let Ok((u, v)) = cp.xy_to_uv(x, y) {
-                    answer = Answer { located: true, a: u, b: v, ..answer };
-                    match cp.z_of_found(u, v) {
-                        Ok(z) if z.is_finite() && x.is_finite() && y.is_finite() => {
-                            let ((u0, u1), (v0, v1)) = ranges.unwrap_or(((u, u), (v, v)));
-                            let inside = (u0..=u1).contains(&u) && (v0..=v1).contains(&v);
-                            answer = Answer { on_road: inside, answered: true, z, ..answer };
+                a.friction = f64::NAN;
+                match cp.xy_to_uv(x, y) {
+                    Ok((u, v)) => {
+                        (a.located, a.a, a.b) = (true, u, v);
+                        if let Ok(z) = cp.z_of_found(u, v) {
+                            if z.is_finite() && x.is_finite() && y.is_finite() {
+                                let ((u0, u1), (v0, v1)) = ranges.unwrap_or(((u, u), (v, v)));
+                                a.on_road = (u0..=u1).contains(&u) && (v0..=v1).contains(&v);
+                                (a.answered, a.z) = (true, z);
+                            }
                         }
-                        _ => {}
                     }
+                    Err(_) => (a.a, a.b) = (0.0, 0.0),
                 }
             }
-            Evaluator::Map(probe, _) => {
-                if let Some(g) = probe.ground(x, y).filter(|g| g.z.is_finite()) {
-                    let road = i32::try_from(g.road).unwrap_or(i32::MAX);
-                    answer = Answer {
-                        on_road: true,
-                        answered: true,
-                        located: true,
-                        z: g.z,
-                        friction: g.friction,
-                        a: g.s,
-                        b: g.t,
-                        road,
-                        lane: g.lane,
-                        ..answer
-                    };
+            Evaluator::Map(probe, _) => match probe.ground(x, y).filter(|g| g.z.is_finite()) {
+                Some(g) => {
+                    (a.on_road, a.answered, a.located) = (true, true, true);
+                    (a.z, a.friction, a.a, a.b) = (g.z, g.friction, g.s, g.t);
+                    (a.road, a.lane) = (i32::try_from(g.road).unwrap_or(i32::MAX), g.lane);
                 }
-            }
+                None => (a.friction, a.a, a.b) = (f64::NAN, 0.0, 0.0),
+            },
         }
-        self.answer = answer;
     }
 
     /// A Real quantity other than the height (the base answer known).
