@@ -7,13 +7,16 @@
 #   opencrg-VERSION-linux-aarch64.tar.gz                      (glibc 2.17 and later, zig)
 #   opencrg-VERSION-windows-x86_64.zip                        the C library and the command
 # (each archive with the FMU binaries of all three platforms, each wheel with its own's)
+#   opencrg-VERSION.tgz                                       the npm package (WebAssembly)
+#   opencrg-VERSION-web.zip                                   the web page, static
 # and tests them: the aarch64 wheel under qemu with Debian's aarch64 Python
 # (packaging/test-wheel-aarch64.sh); the Linux archives by c-tests/cross/run.sh linux and
 # arm (which build them), the x86-64 wheel and the source distribution by test.sh, the
 # Windows zip's tree by c-tests/cross/run.sh windows.
 #   packaging/release.sh OUT
-# Needs: maturin[zig] (pip), rustup targets aarch64-unknown-linux-gnu and
-# x86_64-pc-windows-gnu, Debian's gcc-mingw-w64-x86-64, qemu-user, libc6-arm64-cross.
+# Needs: maturin[zig] (pip), rustup targets aarch64-unknown-linux-gnu,
+# x86_64-pc-windows-gnu and wasm32-unknown-unknown, Debian's gcc-mingw-w64-x86-64,
+# qemu-user, libc6-arm64-cross, npm.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=$(realpath -m "${1:?usage: packaging/release.sh OUT}")
@@ -56,6 +59,11 @@ for arch in x86_64 aarch64; do
 done
 rm -rf "$fmu_binaries"
 maturin sdist -m crates/opencrg-python/Cargo.toml --out "$out" >/dev/null
+# The npm package and the page (tested by test.sh).
+packaging/wasm.sh target/wasm-release >/dev/null
+cp "target/wasm-release/opencrg-$version.tgz" "$out/"
+(cd target/wasm-release && rm -f "opencrg-$version-web.zip" && python3 -m zipfile -c "opencrg-$version-web.zip" web)
+cp "target/wasm-release/opencrg-$version-web.zip" "$out/"
 packaging/test-wheel-aarch64.sh "$(ls "$out"/opencrg-"$version"-cp39-abi3-*aarch64*.whl)"
 (cd "$out" && sha256sum opencrg-* >SHA256SUMS)
 ls -l "$out"
