@@ -70,7 +70,7 @@ export class ContactPoint {
   constructor(road: Road, options?: Settings);
   setOption(name: string, value: number): void;
   readonly options: Settings;
-  /** 1 for each point of the last call the library refused (the C API's return code 0). */
+  /** 1 for each point of the last call without an answer: refused (the C API's return code 0) for a number, answered NaN for arrays. */
   readonly refused: Uint8Array;
   uvToZ<T extends Coordinates>(u: T, v: T): Answer<T>;
   xyToZ<T extends Coordinates>(x: T, y: T): Answer<T>;

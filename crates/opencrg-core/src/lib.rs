@@ -85,6 +85,7 @@ pub use model::header::{Channel, DataFormat};
 pub use model::road::{LoadOptions, Road};
 pub use model::{georef, grid, header, refline, report};
 pub use parts::draft;
+pub use query::batch::Evaluation;
 pub use query::contact::{ContactPoint, SearchHistory};
 pub use read::reader;
 pub use write::writer::{self, write};

@@ -1,5 +1,5 @@
-//! Running the core's evaluations on Python inputs: the batch calls without the GIL,
-//! and options set by their Python names.
+//! Running the core's evaluations on Python inputs: its batch calls without the GIL, and
+//! options set by their Python names.
 
 use crate::arrays::Points;
 use crate::errors;
@@ -27,68 +27,8 @@ macro_rules! for_each_evaluation {
 }
 pub(crate) use for_each_evaluation;
 
-/// The evaluations, each with the number of values it gives per point.
-#[derive(Clone, Copy)]
-pub(crate) enum Call {
-    UvToZ,
-    XyToZ,
-    UvToXy,
-    XyToUv,
-    UvToPk,
-    XyToPk,
-    UvToNormal,
-    XyToNormal,
-}
-
-impl Call {
-    fn outputs(self) -> usize {
-        match self {
-            Call::UvToZ | Call::XyToZ => 1,
-            Call::UvToXy | Call::XyToUv | Call::UvToPk | Call::XyToPk => 2,
-            Call::UvToNormal | Call::XyToNormal => 4,
-        }
-    }
-}
-
-/// Runs `call` on every point, in order, on one contact point: the classic calls'
-/// answers (history included); NaN where a point is refused.
-fn run(cp: &mut crg::ContactPoint, call: Call, a: &[f64], b: &[f64]) -> Vec<Vec<f64>> {
-    let n = a.len();
-    let mut out = vec![vec![f64::NAN; n]; call.outputs()];
-    match (call, out.as_mut_slice()) {
-        (Call::UvToZ, [z]) => {
-            cp.uv_to_z_many(a, b, z);
-        }
-        (Call::XyToZ, [z]) => {
-            cp.xy_to_z_many(a, b, z);
-        }
-        (Call::UvToXy, [x, y]) => {
-            cp.uv_to_xy_many(a, b, x, y);
-        }
-        (Call::XyToUv, [u, v]) => {
-            cp.xy_to_uv_many(a, b, u, v);
-        }
-        (Call::UvToPk, [phi, curv]) => {
-            cp.uv_to_pk_many(a, b, phi, curv);
-        }
-        (Call::XyToPk, [phi, curv]) => {
-            cp.xy_to_pk_many(a, b, phi, curv);
-        }
-        (Call::UvToNormal | Call::XyToNormal, [z, nx, ny, nz]) => {
-            for i in 0..n {
-                let normal = match call {
-                    Call::UvToNormal => cp.uv_to_normal(a[i], b[i]),
-                    _ => cp.xy_to_normal(a[i], b[i]),
-                };
-                if let Ok((height, [x, y, up])) = normal {
-                    (z[i], nx[i], ny[i], nz[i]) = (height, x, y, up);
-                }
-            }
-        }
-        _ => unreachable!("one output vector per value of the call"),
-    }
-    out
-}
+/// The evaluations (the core's list).
+pub(crate) use ::opencrg_core::Evaluation as Call;
 
 /// Evaluates `call` at the points (a, b) on `cp`, without the GIL.
 pub(crate) fn evaluate<'py>(
@@ -100,7 +40,7 @@ pub(crate) fn evaluate<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let points = Points::new([a, b])?;
     let [sa, sb] = points.slices()?;
-    let outputs = py.detach(|| run(cp, call, sa, sb));
+    let outputs = py.detach(|| cp.evaluate_many(call, sa, sb));
     points.results(py, outputs)
 }
 

@@ -1,11 +1,12 @@
 //! `ContactPoint`: a road with options of its own and an x/y search history, its calls
 //! made point by point in order, as the C API's.
 
-use crate::evaluate::{call, Call};
+use crate::evaluate::call;
 use crate::road::Road;
 use crate::settings;
 use js_sys::Uint8Array;
 use opencrg_core::settings::Family;
+use opencrg_core::Evaluation;
 use wasm_bindgen::prelude::*;
 
 /// A point of evaluation: its own options and x/y search history.
@@ -45,56 +46,57 @@ impl ContactPoint {
         settings::object(self.cp.options())
     }
 
-    /// Which points of the last call the library refused (1; the C API's return code
-    /// 0), where the others hold 0 (an answer, NaN where the grid holds NaN).
+    /// Which points of the last call the library refused: 1 where the C API's call
+    /// returns 0 (a number given), 1 where the answer is NaN (arrays given, which the
+    /// batch calls answer); 0 for the others.
     #[wasm_bindgen(getter)]
     pub fn refused(&self) -> Uint8Array {
         Uint8Array::from(self.refused.as_slice())
     }
 
-    fn evaluate(&mut self, which: Call, a: &JsValue, b: &JsValue) -> Result<JsValue, JsError> {
+    fn evaluate(&mut self, which: Evaluation, a: &JsValue, b: &JsValue) -> Result<JsValue, JsError> {
         call(&mut self.cp, which, a, b, &mut self.refused)
     }
 
     /// Elevation at (u, v).
     #[wasm_bindgen(js_name = uvToZ)]
     pub fn uv_to_z(&mut self, u: &JsValue, v: &JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Call::UvToZ, u, v)
+        self.evaluate(Evaluation::UvToZ, u, v)
     }
 
     /// Elevation at (x, y).
     #[wasm_bindgen(js_name = xyToZ)]
     pub fn xy_to_z(&mut self, x: &JsValue, y: &JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Call::XyToZ, x, y)
+        self.evaluate(Evaluation::XyToZ, x, y)
     }
 
     /// `[x, y]` at (u, v).
     #[wasm_bindgen(js_name = uvToXy)]
     pub fn uv_to_xy(&mut self, u: &JsValue, v: &JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Call::UvToXy, u, v)
+        self.evaluate(Evaluation::UvToXy, u, v)
     }
 
     /// `[u, v]` at (x, y).
     #[wasm_bindgen(js_name = xyToUv)]
     pub fn xy_to_uv(&mut self, x: &JsValue, y: &JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Call::XyToUv, x, y)
+        self.evaluate(Evaluation::XyToUv, x, y)
     }
 
     /// `[heading, curvature]` at (u, v).
     #[wasm_bindgen(js_name = uvToPk)]
     pub fn uv_to_pk(&mut self, u: &JsValue, v: &JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Call::UvToPk, u, v)
+        self.evaluate(Evaluation::UvToPk, u, v)
     }
 
     /// `[heading, curvature]` at (x, y).
     #[wasm_bindgen(js_name = xyToPk)]
     pub fn xy_to_pk(&mut self, x: &JsValue, y: &JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Call::XyToPk, x, y)
+        self.evaluate(Evaluation::XyToPk, x, y)
     }
 
     /// `[z, nx, ny, nz]` at (u, v).
     #[wasm_bindgen(js_name = uvToNormal)]
     pub fn uv_to_normal(&mut self, u: &JsValue, v: &JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Call::UvToNormal, u, v)
+        self.evaluate(Evaluation::UvToNormal, u, v)
     }
 }

@@ -1,10 +1,11 @@
 //! `Road`: a CRG file read from bytes, checked, modified, and evaluated with default
 //! options (or those given with a call).
 
-use crate::evaluate::{call, Call};
+use crate::evaluate::call;
 use crate::settings;
 use js_sys::{Array, Float32Array, Object, Reflect, Uint8Array};
 use opencrg_core::settings::Family;
+use opencrg_core::Evaluation;
 use opencrg_core::{Compat, ContactPoint};
 use std::sync::Arc;
 use wasm_bindgen::prelude::*;
@@ -27,7 +28,7 @@ impl Road {
         Ok(cp)
     }
 
-    fn evaluate(&self, which: Call, a: &JsValue, b: &JsValue, options: &JsValue) -> Result<JsValue, JsError> {
+    fn evaluate(&self, which: Evaluation, a: &JsValue, b: &JsValue, options: &JsValue) -> Result<JsValue, JsError> {
         call(&mut self.contact_point(options)?, which, a, b, &mut Vec::new())
     }
 }
@@ -230,42 +231,42 @@ impl Road {
     /// Elevation at (u, v); `options`: contact point options for this call.
     #[wasm_bindgen(js_name = uvToZ)]
     pub fn uv_to_z(&self, u: &JsValue, v: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Call::UvToZ, u, v, &options)
+        self.evaluate(Evaluation::UvToZ, u, v, &options)
     }
 
     /// Elevation at (x, y).
     #[wasm_bindgen(js_name = xyToZ)]
     pub fn xy_to_z(&self, x: &JsValue, y: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Call::XyToZ, x, y, &options)
+        self.evaluate(Evaluation::XyToZ, x, y, &options)
     }
 
     /// `[x, y]` at (u, v).
     #[wasm_bindgen(js_name = uvToXy)]
     pub fn uv_to_xy(&self, u: &JsValue, v: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Call::UvToXy, u, v, &options)
+        self.evaluate(Evaluation::UvToXy, u, v, &options)
     }
 
     /// `[u, v]` at (x, y).
     #[wasm_bindgen(js_name = xyToUv)]
     pub fn xy_to_uv(&self, x: &JsValue, y: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Call::XyToUv, x, y, &options)
+        self.evaluate(Evaluation::XyToUv, x, y, &options)
     }
 
     /// `[heading, curvature]` at (u, v).
     #[wasm_bindgen(js_name = uvToPk)]
     pub fn uv_to_pk(&self, u: &JsValue, v: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Call::UvToPk, u, v, &options)
+        self.evaluate(Evaluation::UvToPk, u, v, &options)
     }
 
     /// `[heading, curvature]` at (x, y).
     #[wasm_bindgen(js_name = xyToPk)]
     pub fn xy_to_pk(&self, x: &JsValue, y: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Call::XyToPk, x, y, &options)
+        self.evaluate(Evaluation::XyToPk, x, y, &options)
     }
 
     /// `[z, nx, ny, nz]` at (u, v): the elevation and the upward unit normal.
     #[wasm_bindgen(js_name = uvToNormal)]
     pub fn uv_to_normal(&self, u: &JsValue, v: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Call::UvToNormal, u, v, &options)
+        self.evaluate(Evaluation::UvToNormal, u, v, &options)
     }
 }

@@ -140,6 +140,105 @@ impl ContactPoint {
     }
 }
 
+/// An evaluation call, by what it takes and gives: the one list the bindings serve their
+/// evaluation methods from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Evaluation {
+    /// Elevation at (u, v).
+    UvToZ,
+    /// Elevation at (x, y).
+    XyToZ,
+    /// (x, y) of (u, v).
+    UvToXy,
+    /// (u, v) of (x, y).
+    XyToUv,
+    /// Heading and curvature at (u, v).
+    UvToPk,
+    /// Heading and curvature at (x, y).
+    XyToPk,
+    /// Elevation and the upward unit normal at (u, v).
+    UvToNormal,
+    /// Elevation and the upward unit normal at (x, y).
+    XyToNormal,
+}
+
+impl Evaluation {
+    /// The values it gives per point.
+    pub fn outputs(self) -> usize {
+        match self {
+            Evaluation::UvToZ | Evaluation::XyToZ => 1,
+            Evaluation::UvToXy | Evaluation::XyToUv | Evaluation::UvToPk | Evaluation::XyToPk => 2,
+            Evaluation::UvToNormal | Evaluation::XyToNormal => 4,
+        }
+    }
+
+    /// Whether it takes x/y (else u/v).
+    pub fn takes_xy(self) -> bool {
+        matches!(self, Evaluation::XyToZ | Evaluation::XyToUv | Evaluation::XyToPk | Evaluation::XyToNormal)
+    }
+}
+
+impl ContactPoint {
+    /// `call` at every point (`a[i]`, `b[i]`), in order, through the batch calls: one
+    /// vector per value it gives, NaN where a point is refused (or its answer is NaN).
+    pub fn evaluate_many(&mut self, call: Evaluation, a: &[f64], b: &[f64]) -> Vec<Vec<f64>> {
+        let n = a.len().min(b.len());
+        let mut out = vec![vec![f64::NAN; n]; call.outputs()];
+        match (call, out.as_mut_slice()) {
+            (Evaluation::UvToZ, [z]) => {
+                self.uv_to_z_many(a, b, z);
+            }
+            (Evaluation::XyToZ, [z]) => {
+                self.xy_to_z_many(a, b, z);
+            }
+            (Evaluation::UvToXy, [x, y]) => {
+                self.uv_to_xy_many(a, b, x, y);
+            }
+            (Evaluation::XyToUv, [u, v]) => {
+                self.xy_to_uv_many(a, b, u, v);
+            }
+            (Evaluation::UvToPk, [phi, curv]) => {
+                self.uv_to_pk_many(a, b, phi, curv);
+            }
+            (Evaluation::XyToPk, [phi, curv]) => {
+                self.xy_to_pk_many(a, b, phi, curv);
+            }
+            (Evaluation::UvToNormal | Evaluation::XyToNormal, [z, nx, ny, nz]) => {
+                for i in 0..n {
+                    if let Ok((height, [x, y, up])) = self.evaluate_normal(call, a[i], b[i]) {
+                        (z[i], nx[i], ny[i], nz[i]) = (height, x, y, up);
+                    }
+                }
+            }
+            _ => unreachable!("one output vector per value of the call"),
+        }
+        out
+    }
+
+    /// `call` at one point: its values, or why it was refused.
+    pub fn evaluate_one(&mut self, call: Evaluation, a: f64, b: f64) -> Result<Vec<f64>> {
+        Ok(match call {
+            Evaluation::UvToZ => vec![self.uv_to_z(a, b)?],
+            Evaluation::XyToZ => vec![self.xy_to_z(a, b)?],
+            Evaluation::UvToXy => <[f64; 2]>::from(self.uv_to_xy(a, b)?).to_vec(),
+            Evaluation::XyToUv => <[f64; 2]>::from(self.xy_to_uv(a, b)?).to_vec(),
+            Evaluation::UvToPk => <[f64; 2]>::from(self.uv_to_pk(a, b)?).to_vec(),
+            Evaluation::XyToPk => <[f64; 2]>::from(self.xy_to_pk(a, b)?).to_vec(),
+            Evaluation::UvToNormal | Evaluation::XyToNormal => {
+                let (z, [x, y, up]) = self.evaluate_normal(call, a, b)?;
+                vec![z, x, y, up]
+            }
+        })
+    }
+
+    fn evaluate_normal(&mut self, call: Evaluation, a: f64, b: f64) -> Result<(f64, [f64; 3])> {
+        match call {
+            Evaluation::UvToNormal => self.uv_to_normal(a, b),
+            _ => self.xy_to_normal(a, b),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use crate::query::contact::ContactPoint;
@@ -225,6 +324,42 @@ mod tests {
                 }
                 assert_eq!(ok, expected_ok, "mode {mode}, {len} points");
                 assert!(len < 100 || (ok > 0 && ok < len) || mode > 0, "mode {mode}: successes and failures");
+            }
+        }
+    }
+
+    /// Every call through `evaluate_many` equals `evaluate_one` point by point, in
+    /// order (the x/y search history included), refusals as NaN.
+    #[test]
+    fn evaluate_many_equals_evaluate_one() {
+        use crate::query::batch::Evaluation::*;
+        let road = RoadSpec::straight(20.0, 4.0, 0.1, 0.25)
+            .with_heading(|u| 0.05 * u)
+            .with_elevation(|u, v| (u * 0.7).sin() * 0.01 + v * 0.02)
+            .build()
+            .unwrap();
+        let road = Arc::new(road);
+        let a: Vec<f64> = (0..60).map(|i| i as f64 * 0.4 - 2.0).collect();
+        let b: Vec<f64> = (0..60).map(|i| (i % 9) as f64 * 0.6 - 2.5).collect();
+        for call in [UvToZ, XyToZ, UvToXy, XyToUv, UvToPk, XyToPk, UvToNormal, XyToNormal] {
+            let mut single = ContactPoint::new(road.clone());
+            single.set_option_int(crate::base::settings::opt::BORDER_MODE_V, 0).unwrap();
+            let mut batch = single.clone();
+            let columns = batch.evaluate_many(call, &a, &b);
+            assert_eq!(columns.len(), call.outputs());
+            let mut refused = 0;
+            for i in 0..a.len() {
+                let expected = single.evaluate_one(call, a[i], b[i]);
+                refused += usize::from(expected.is_err());
+                let expected = expected.unwrap_or_else(|_| vec![f64::NAN; call.outputs()]);
+                for (column, e) in columns.iter().zip(expected) {
+                    assert_eq!(column[i].to_bits(), e.to_bits(), "{call:?}, point {i}");
+                }
+            }
+            assert!(refused < a.len(), "{call:?}: answers");
+            // Off the road sideways (border mode none): the elevations are refused.
+            if matches!(call, UvToZ | XyToZ | UvToNormal | XyToNormal) {
+                assert!(refused > 0, "{call:?}: refusals");
             }
         }
     }
