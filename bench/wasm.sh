@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The npm package's figures: the .wasm's size (and gzipped); uvToZ and map.ground per
-# point in Node against crgEvaluv2z and crgOdrEvalxy natively, at the same points (a
-# 67 MB KRBI road of make_bench_roads and CARLA's Town03), in ROUNDS alternating rounds
-# (default 5); opening the 80 MB KRBI road and Town03 in the web page in headless Chromium
-# (fetching, reading, drawing). Medians with min and max; the processor's model first.
+# point in Node (the second call over the points, and the first) against crgEvaluv2z and
+# crgOdrEvalxy natively, at the same points (a 67 MB KRBI road of make_bench_roads and
+# CARLA's Town03), in ROUNDS alternating rounds (default 5); opening the 80 MB KRBI road
+# and Town03 in the web page in headless Chromium (fetching, reading, drawing, in real
+# time: bench/page_timing.py). Medians with min and max; the processor's model first.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rounds=${ROUNDS:-5}
@@ -34,11 +35,7 @@ server=$!
 sleep 1
 for r in $(seq "$rounds"); do
     for file in big.crg Town03.xodr; do
-        profile=$(mktemp -d)
-        timing=$(timeout 300 chromium --headless --no-sandbox --disable-gpu --disable-background-networking \
-            --no-first-run --user-data-dir="$profile" --virtual-time-budget=120000 --dump-dom \
-            "http://127.0.0.1:8791/web/index.html?road=../$file" 2>/dev/null | sed -n 's/.*id="timing">\([^<]*\)<.*/\1/p')
-        rm -rf "$profile"
+        timing=$(python3 bench/page_timing.py "http://127.0.0.1:8791/web/index.html?road=../$file" 300)
         echo "page $file: $timing" >>"$out"
     done
 done
@@ -48,10 +45,12 @@ python3 - "$out" <<'PY'
 import re, statistics, sys
 rows = {}
 for line in open(sys.argv[1]):
-    m = re.match(r"wasm: ([\d.]+) ns per uvToZ point, ([\d.]+) ns per map.ground point \(sums (\S+) (\S+)\)", line)
+    m = re.match(r"wasm: ([\d.]+) ns per uvToZ point, ([\d.]+) ns per map.ground point \(sums (\S+) (\S+)\); first calls ([\d.]+), ([\d.]+)", line)
     if m:
         rows.setdefault("uvToZ (Node, wasm)", []).append(float(m[1]))
         rows.setdefault("map.ground (Node, wasm)", []).append(float(m[2]))
+        rows.setdefault("uvToZ (Node, wasm), first call", []).append(float(m[5]))
+        rows.setdefault("map.ground (Node, wasm), first call", []).append(float(m[6]))
     m = re.match(r"native: ([\d.]+) ns per crgEvaluv2z point, ([\d.]+) ns per crgOdrEvalxy point", line)
     if m:
         rows.setdefault("crgEvaluv2z (native)", []).append(float(m[1]))
@@ -62,7 +61,8 @@ for line in open(sys.argv[1]):
         rows.setdefault(f"page {m[1]}: read (ms)", []).append(int(m[3]))
 for name, v in rows.items():
     print(f"{name:44s} median {statistics.median(v):9.1f}  (min {min(v):.1f}, max {max(v):.1f}, {len(v)} rounds)")
-for a, b in (("uvToZ (Node, wasm)", "crgEvaluv2z (native)"), ("map.ground (Node, wasm)", "crgOdrEvalxy (native)")):
+for a, b in (("uvToZ (Node, wasm)", "crgEvaluv2z (native)"), ("map.ground (Node, wasm)", "crgOdrEvalxy (native)"),
+             ("uvToZ (Node, wasm), first call", "crgEvaluv2z (native)"), ("map.ground (Node, wasm), first call", "crgOdrEvalxy (native)")):
     r = [x / y for x, y in zip(rows[a], rows[b])]
     print(f"{a} / native: median {statistics.median(r):.2f} (min {min(r):.2f}, max {max(r):.2f})")
 PY
