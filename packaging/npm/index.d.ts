@@ -45,6 +45,8 @@ export class Road {
     v: number;
     iri: number;
     segments: Array<{ uStart: number; uEnd: number; iri: number | null }>;
+    /** The displacement PSD: `[n, Gd(n)]` per third-octave band (cycles/m, m³). */
+    bands: Array<[number, number]>;
     gdN0: number;
     w: number;
     iso8608: string;
@@ -114,3 +116,7 @@ export class OdrMap {
 
 /** OpenDRIVE maps. */
 export const odr: { Map: typeof OdrMap };
+
+/** The ISO 8608 road classes roughness is classified by: the reference spatial frequency
+ * n0 (cycles/m), the limits of Gd(n0) between the classes (m³), the classes' letters. */
+export function iso8608Classes(): { n0: number; limits: number[]; classes: string };

@@ -3,7 +3,7 @@
 // coloured by height, and reads the surface where it is clicked. `?road=URL&probe=X,Y`
 // opens a road or map by URL (a map's CRG files relative to it) and writes the answer at
 // x/y into #probe: "z u v" for a CRG file, "z friction road s t" for a map.
-import { ContactPoint, Road, odr } from './index.js';
+import { ContactPoint, Road, iso8608Classes, odr } from './index.js';
 
 const $ = (id) => document.getElementById(id);
 let shown = null; // { kind: 'road', road, cp } or { kind: 'map', map }; the view's frame
@@ -240,17 +240,147 @@ function sections(u, v) {
   chart($('across'), vs, shown.road.uvToZ(new Float64Array(n).fill(u), vs), 'v [m]', `across v at u = ${u.toFixed(3)} m`);
 }
 
-/** The roughness of the default tracks, as `opencrg roughness` gives it. */
+/** The roughness of the default tracks, as `opencrg roughness` gives it: a table and the
+ * command's figure (the densities among the ISO 8608 class bands, the IRI along u). */
 function rough() {
   try {
+    const tracks = shown.road.roughness();
     const lines = ['track v [m]   IRI [m/km]   ISO 8608   Gd(n0) [m³]'];
-    for (const t of shown.road.roughness()) {
+    for (const t of tracks) {
       lines.push(`${t.v.toFixed(2).padStart(11)}   ${t.iri.toFixed(3).padStart(10)}   ${t.iso8608.padStart(8)}   ${t.gdN0.toExponential(3)}`);
     }
     $('roughness').textContent = lines.join('\n');
+    roughnessFigure($('rough'), tracks);
   } catch (e) {
     $('roughness').textContent = `roughness: ${e.message}`;
   }
+}
+
+const TRACK_COLOURS = ['#1e5ac8', '#c83c28', '#28963c', '#963caa', '#dc8c14', '#000'];
+
+/** Log-log axes over decades: `f` as for `axes`, x and y as log10 of the values. */
+function logAxes(g, f, xLabel, yLabel) {
+  g.strokeStyle = '#444';
+  g.fillStyle = '#222';
+  g.font = '12px sans-serif';
+  g.strokeRect(f.left, f.top, f.pw, f.ph);
+  g.textAlign = 'center';
+  for (let d = Math.ceil(f.x0); d <= f.x1; d++) {
+    const px = f.left + ((d - f.x0) / (f.x1 - f.x0)) * f.pw;
+    g.beginPath(), g.moveTo(px, f.top + f.ph), g.lineTo(px, f.top + f.ph + 5), g.stroke();
+    g.fillText(`1e${d}`, px, f.top + f.ph + 18);
+  }
+  g.fillText(xLabel, f.left + f.pw / 2, f.top + f.ph + 34);
+  g.textAlign = 'right';
+  for (let d = Math.ceil(f.y0); d <= f.y1; d++) {
+    const py = f.top + ((f.y1 - d) / (f.y1 - f.y0)) * f.ph;
+    g.beginPath(), g.moveTo(f.left - 5, py), g.lineTo(f.left, py), g.stroke();
+    g.fillText(`1e${d}`, f.left - 8, py + 4);
+  }
+  g.save(), g.translate(14, f.top + f.ph / 2), g.rotate(-Math.PI / 2), g.textAlign = 'center';
+  g.fillText(yLabel, 0, 0), g.restore();
+}
+
+/** A line through `points` ([x, y] in the frame's units; null: a gap), clipped to it. */
+function polyline(g, f, points, colour, width) {
+  g.save();
+  g.beginPath(), g.rect(f.left, f.top, f.pw, f.ph), g.clip();
+  g.strokeStyle = colour;
+  g.lineWidth = width;
+  g.beginPath();
+  let pen = false;
+  for (const p of points) {
+    if (!p) {
+      pen = false;
+      continue;
+    }
+    const px = f.left + ((p[0] - f.x0) / (f.x1 - f.x0)) * f.pw;
+    const py = f.top + ((f.y1 - p[1]) / (f.y1 - f.y0)) * f.ph;
+    pen ? g.lineTo(px, py) : g.moveTo(px, py);
+    pen = true;
+  }
+  g.stroke();
+  g.restore();
+}
+
+/** Each track's name in its colour, top right inside the frame. */
+function legend(g, f, names) {
+  g.font = '12px sans-serif';
+  g.textAlign = 'left';
+  const w = Math.max(...names.map((n) => g.measureText(n).width)) + 44;
+  const [x, y] = [f.left + f.pw - w - 8, f.top + 8];
+  g.fillStyle = 'rgba(255,255,255,0.9)';
+  g.fillRect(x, y, w, 18 * names.length + 6);
+  names.forEach((name, i) => {
+    g.strokeStyle = TRACK_COLOURS[i % TRACK_COLOURS.length];
+    g.lineWidth = 2;
+    g.beginPath(), g.moveTo(x + 6, y + 14 + 18 * i), g.lineTo(x + 30, y + 14 + 18 * i), g.stroke();
+    g.fillStyle = '#222';
+    g.fillText(name, x + 36, y + 18 + 18 * i);
+  });
+  g.lineWidth = 1;
+}
+
+/** The figure of `opencrg roughness --plot`: above, each track's displacement PSD on
+ * log-log axes among the ISO 8608 class bands (lines of slope -2 through the class limits
+ * at n0, the letters between them); below, the IRI per segment as steps along u. */
+function roughnessFigure(canvas, tracks) {
+  const g = canvas.getContext('2d');
+  const { n0, limits, classes } = iso8608Classes();
+  const [W, left, right] = [canvas.width, 92, 28];
+  g.fillStyle = '#fff';
+  g.fillRect(0, 0, W, canvas.height);
+  const densities = tracks.flatMap((t) => t.bands.map((b) => b[1])).filter((d) => d > 0);
+  const top = { x0: -2, x1: 1, left, top: 44, pw: W - left - right, ph: 400 };
+  top.y0 = Math.floor(Math.log10(Math.min(1e-9, ...densities)));
+  top.y1 = Math.ceil(Math.log10(Math.max(1e-1, ...densities)));
+  g.fillStyle = '#222';
+  g.font = '14px sans-serif';
+  g.textAlign = 'left';
+  g.fillText(`${shown.name}: displacement PSD and ISO 8608 classes`, left, 24);
+  logAxes(g, top, 'n [cycles/m]', 'Gd(n) [m³]');
+  // Gd(n) = Gd(n0) (n / n0)^-2, in log10: a line of slope -2 through (log n0, log Gd(n0)).
+  const band = (at) => [[top.x0, at - 2 * (top.x0 - Math.log10(n0))], [top.x1, at - 2 * (top.x1 - Math.log10(n0))]];
+  for (const l of limits) polyline(g, top, band(Math.log10(l)), '#969696', 1);
+  const half = Math.log10(4) / 2;
+  const middles = [Math.log10(limits[0]) - half, ...limits.slice(1).map((l, k) => (Math.log10(limits[k]) + Math.log10(l)) / 2), Math.log10(limits[limits.length - 1]) + half];
+  g.fillStyle = '#969696';
+  g.textAlign = 'center';
+  [...classes].forEach((letter, k) => {
+    const at = [2, 1, 5, 0.5, 0.2, 0.1, 0.05, 0.02]
+      .map((n) => [Math.log10(n), middles[k] - 2 * (Math.log10(n) - Math.log10(n0))])
+      .find(([, d]) => d > top.y0 + 0.3 && d < top.y1 - 0.3);
+    if (at) g.fillText(letter, top.left + ((at[0] - top.x0) / (top.x1 - top.x0)) * top.pw, top.top + ((top.y1 - at[1]) / (top.y1 - top.y0)) * top.ph + 4);
+  });
+  tracks.forEach((t, i) => {
+    const points = t.bands.filter((b) => b[1] > 0).map(([n, d]) => [Math.log10(n), Math.log10(d)]);
+    const colour = TRACK_COLOURS[i % TRACK_COLOURS.length];
+    polyline(g, top, points, colour, 2);
+    g.fillStyle = colour;
+    for (const [x, y] of points) {
+      const px = top.left + ((x - top.x0) / (top.x1 - top.x0)) * top.pw;
+      const py = top.top + ((top.y1 - y) / (top.y1 - top.y0)) * top.ph;
+      g.beginPath(), g.arc(px, py, 3, 0, 2 * Math.PI), g.fill();
+    }
+  });
+  legend(g, top, tracks.map((t) => `v = ${t.v} m (class ${t.iso8608})`));
+  // The IRI per segment: steps along u; a segment without data breaks the line.
+  const segments = tracks.flatMap((t) => t.segments);
+  const u0 = Math.min(...segments.map((s) => s.uStart));
+  const u1 = Math.max(...segments.map((s) => s.uEnd));
+  const most = Math.max(0, ...segments.map((s) => s.iri ?? 0));
+  const low = { x0: u0, x1: u1 > u0 ? u1 : u0 + 1, y0: 0, y1: most > 0 ? most * 1.15 : 1, left, top: 540, pw: W - left - right, ph: canvas.height - 540 - 44 };
+  g.fillStyle = '#222';
+  g.font = '14px sans-serif';
+  g.textAlign = 'left';
+  const length = tracks[0]?.segments[0] ? tracks[0].segments[0].uEnd - tracks[0].segments[0].uStart : 0;
+  g.fillText(`IRI per ${+length.toFixed(3)} m segment`, left, 520);
+  axes(g, low, 'u [m]', 'IRI [m/km]');
+  tracks.forEach((t, i) => {
+    const steps = t.segments.flatMap((s) => (s.iri === null ? [null] : [[s.uStart, s.iri], [s.uEnd, s.iri]]));
+    polyline(g, low, steps, TRACK_COLOURS[i % TRACK_COLOURS.length], 2);
+  });
+  legend(g, low, tracks.map((t) => `v = ${t.v} m`));
 }
 
 /** The answer at (x, y): "z u v" for a road, "z friction road s t" for a map. */

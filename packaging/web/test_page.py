@@ -1,7 +1,8 @@
 """The web page in headless Chromium, served from WEB on loopback: `?road=...&probe=...`
 for the demo road and the demo map (its CRG file fetched beside it) answers what the
-native command answers (within 1e-9 m), and the top view is drawn (a screenshot with
-many pixels in the height colours).
+native command answers (within 1e-9 m), the roughness table holds the command's IRI, and
+the top view, the 3D view and the roughness figure are drawn (screenshots: many pixels in
+the height colours; the tracks' colours on a road's page, not on a map's).
 
 usage: python3 test_page.py WEB OPENCRG EXAMPLES
 """
@@ -39,13 +40,13 @@ threading.Thread(target=server.serve_forever, daemon=True).start()
 base = f"http://127.0.0.1:{server.server_address[1]}/web/index.html"
 
 
-def chromium(url, *args):
+def chromium(url, *args, size="1400,800"):
     profile = tempfile.mkdtemp()
     out = subprocess.run(
         ["chromium", "--headless", "--no-sandbox", "--disable-gpu", "--use-angle=swiftshader",
          "--enable-unsafe-swiftshader", "--disable-background-networking",
          "--disable-component-update", "--disable-sync", "--no-first-run", f"--user-data-dir={profile}",
-         "--window-size=1400,800", "--virtual-time-budget=8000", *args, url],
+         f"--window-size={size}", "--virtual-time-budget=8000", *args, url],
         capture_output=True, text=True, timeout=120)
     shutil.rmtree(profile, ignore_errors=True)
     return out.stdout
@@ -96,6 +97,19 @@ for query in ("road=../data/demo_map.xodr", "road=../data/demo_road.crg&view=3d"
     total = sum(len(r) for r in rows)
     assert coloured > 0.02 * total, f"{query}: {coloured} of {total} pixels coloured"
     shares.append(f"{100 * coloured / total:.1f} %")
+# The roughness figure: the tracks' lines in their colours on the road's page (the IRI
+# steps hold runs of exactly those pixels; the outer tracks of the demo road nearly
+# coincide, the last drawn covering the first), none on the map's.
+track_colours = [(30, 90, 200), (200, 60, 40), (40, 150, 60)]
+counts = {}
+for query in ("road=../data/demo_road.crg", "road=../data/demo_map.xodr"):
+    shot = root / "page.png"
+    chromium(f"{base}?{query}", f"--screenshot={shot}", size="1400,2200")
+    rows = pixels(shot)
+    counts[query] = [sum(1 for r in rows for p in r if p == c) for c in track_colours]
+road_counts, map_counts = counts.values()
+assert all(n > 50 for n in road_counts) and sum(road_counts) > 1000 and all(n < 50 for n in map_counts), counts
+print(f"web page: roughness figure drawn ({', '.join(map(str, road_counts))} pixels of the three tracks' colours)")
 print(f"web page: road and map probes as the command answers, its roughness; top and 3D views drawn ({', '.join(shares)} coloured)")
 server.shutdown()
 shutil.rmtree(root, ignore_errors=True)

@@ -15,4 +15,4 @@ mod values;
 
 pub use contact::ContactPoint;
 pub use map::Map;
-pub use road::Road;
+pub use road::{iso8608_classes, Road};

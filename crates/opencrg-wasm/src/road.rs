@@ -180,7 +180,8 @@ impl Road {
     /// The roughness of wheel tracks as `opencrg roughness` gives it: per track (`tracks`:
     /// their v, default -0.85, 0 and 0.85 m) `{v, iri, segments: [{uStart, uEnd, iri}],
     /// gdN0, w, iso8608, skipped}` (IRI in m/km over segments of `segment` m, default 100;
-    /// a segment without data has iri `null`).
+    /// a segment without data has iri `null`; `bands`: the displacement PSD as `[n, Gd(n)]`
+    /// per third-octave band, cycles/m and m³).
     pub fn roughness(&self, tracks: Option<Vec<f64>>, segment: Option<f64>) -> Result<Array, JsError> {
         let tracks = tracks.unwrap_or_else(|| opencrg_tools::roughness::DEFAULT_TRACKS.to_vec());
         let segment = segment.unwrap_or(opencrg_tools::roughness::DEFAULT_SEGMENT);
@@ -202,6 +203,11 @@ impl Road {
                 segments.push(&o);
             }
             put(&t, "segments", segments.into());
+            let bands = Array::new();
+            for &(n, gd) in &track.psd.bands {
+                bands.push(&Array::of2(&n.into(), &gd.into()));
+            }
+            put(&t, "bands", bands.into());
             put(&t, "gdN0", track.psd.gd_n0.into());
             put(&t, "w", track.psd.w.into());
             put(&t, "iso8608", track.psd.class.to_string().into());
@@ -269,4 +275,18 @@ impl Road {
     pub fn uv_to_normal(&self, u: &JsValue, v: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
         self.evaluate(Evaluation::UvToNormal, u, v, &options)
     }
+}
+
+/// The ISO 8608 road classes the roughness is classified by: `{n0, limits, classes}` (the
+/// reference spatial frequency in cycles/m, the limits of Gd(n0) between the classes in m³,
+/// the classes' letters).
+#[wasm_bindgen(js_name = iso8608Classes)]
+pub fn iso8608_classes() -> Object {
+    use opencrg_tools::psd::{CLASSES, CLASS_LIMITS, N0};
+    let o = Object::new();
+    let limits: Array = CLASS_LIMITS.iter().map(|&l| JsValue::from(l)).collect();
+    let _ = Reflect::set(&o, &"n0".into(), &N0.into());
+    let _ = Reflect::set(&o, &"limits".into(), &limits.into());
+    let _ = Reflect::set(&o, &"classes".into(), &CLASSES.iter().collect::<String>().into());
+    o
 }

@@ -10,7 +10,7 @@ import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 
 const [pkg, examples] = process.argv.slice(2);
-const { Road, ContactPoint, odr } = await import(pathToFileURL(join(pkg, 'index.js')).href);
+const { Road, ContactPoint, iso8608Classes, odr } = await import(pathToFileURL(join(pkg, 'index.js')).href);
 const cli = (args, input) => execFileSync(process.env.OPENCRG_CLI, args, { input, encoding: 'utf8' });
 const bytes = readFileSync(join(examples, 'demo_road.crg'));
 
@@ -74,4 +74,24 @@ assert.equal(map.roadIds[g.road], eroad);
 [[g.z, ez], [g.friction, ef], [g.s, es], [g.t, et]].forEach(([a, b]) => close(a, Number(b)));
 assert.ok(Number.isNaN(map.ground(1e6, 1e6).z));
 assert.throws(() => odr.Map.fromBytes(readFileSync(join(examples, 'demo_map.xodr')), {}), /demo_road\.crg/);
+// Roughness as the command gives it: IRI, PSD bands, class; the ISO 8608 classes.
+const plain = Road.fromBytes(bytes, 'demo_road.crg');
+plain.applyModifiers();
+const rough = plain.roughness();
+const expected = JSON.parse(cli(['roughness', '--json', join(examples, 'demo_road.crg')])).tracks;
+assert.equal(rough.length, expected.length);
+rough.forEach((t, i) => {
+  close(t.iri, expected[i].iri);
+  assert.equal(t.iso8608, expected[i].psd.class);
+  assert.equal(t.bands.length, expected[i].psd.bands.length);
+  t.bands.forEach(([n, gd], k) => {
+    close(n, expected[i].psd.bands[k][0]);
+    assert.ok(Math.abs(gd - expected[i].psd.bands[k][1]) <= 1e-9 * Math.abs(gd), `band ${k}`);
+  });
+});
+const classes = iso8608Classes();
+assert.equal(classes.n0, 0.1);
+assert.equal(classes.classes, 'ABCDEFGH');
+assert.equal(classes.limits.length, 7);
+classes.limits.slice(1).forEach((l, k) => close(l / classes.limits[k], 4));
 console.log('npm package API: ok');
