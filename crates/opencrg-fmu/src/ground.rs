@@ -130,8 +130,8 @@ enum Evaluator {
 
 /// One wheel: where it is, its evaluator, its answer.
 struct Wheel {
-    x: f64,
-    y: f64,
+    /// x and y, by [`Quantity::X`] and [`Quantity::Y`].
+    at: [f64; 2],
     evaluator: Evaluator,
     answer: Answer,
 }
@@ -172,7 +172,7 @@ impl Wheels {
                 }
                 Ground::Map(surface) => Evaluator::Map(surface.probe(), surface.probe()),
             };
-            wheels.push(Wheel { x: start.0, y: start.1, evaluator, answer: Answer::default() });
+            wheels.push(Wheel { at: [start.0, start.1], evaluator, answer: Answer::default() });
         }
         let ranges = match ground {
             Ground::Crg(road) => Some((road.u_range(), road.v_range())),
@@ -196,10 +196,8 @@ impl Wheels {
     #[inline(always)]
     pub fn set(&mut self, i: usize, quantity: Quantity, value: f64) {
         let wheel = &mut self.wheels[i];
-        let slot = match quantity {
-            Quantity::X => &mut wheel.x,
-            Quantity::Y => &mut wheel.y,
-            _ => return,
+        let Some(slot) = wheel.at.get_mut(quantity as usize) else {
+            return;
         };
         // A set to the same value keeps the answer (importers set every input each step).
         if slot.to_bits() != value.to_bits() {
@@ -215,8 +213,7 @@ impl Wheels {
         let ranges = self.ranges;
         let wheel = &mut self.wheels[i];
         match quantity {
-            Quantity::X => return wheel.x,
-            Quantity::Y => return wheel.y,
+            Quantity::X | Quantity::Y => return wheel.at[quantity as usize],
             _ => {}
         }
         wheel.base(ranges);
@@ -258,7 +255,7 @@ impl Wheel {
         if self.answer.known {
             return;
         }
-        let (x, y) = (self.x, self.y);
+        let [x, y] = self.at;
         // Written field by field: this runs once per wheel and step.
         let a = &mut self.answer;
         (a.known, a.normal, a.pk) = (true, None, None);
@@ -324,7 +321,7 @@ impl Wheel {
         } else {
             let n = match &mut self.evaluator {
                 Evaluator::Crg(cp) => cp.uv_to_normal(a.a, a.b).ok().map(|(_, n)| n),
-                Evaluator::Map(_, probe) => probe.normal(self.x, self.y),
+                Evaluator::Map(_, probe) => probe.normal(self.at[0], self.at[1]),
             };
             n.filter(|n| n.iter().all(|c| c.is_finite())).unwrap_or(UP)
         };
