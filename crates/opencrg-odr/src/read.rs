@@ -212,12 +212,43 @@ impl Reader<'_> {
         children(Some(parent), "surface").flat_map(|s| children(Some(s), "CRG")).map(|c| self.crg(c)).collect()
     }
 
+    /// Refuses a spiral that the road runs on beyond its length (to the next record's s,
+    /// or to the road's end for the last) so far that it turns by more than
+    /// [`MAX_SPIRAL_TURN`] there: the record's curvature goes on changing as it does
+    /// within it, and each point would cost a quadrature over the whole turn.
+    fn check_reach(&self, plan: &[(Geometry, Node)], road_length: f64) -> Result<()> {
+        for (k, (g, node)) in plan.iter().enumerate() {
+            let Shape::Spiral { start, end } = g.shape else { continue };
+            let (until, what) = match plan.get(k + 1) {
+                Some((next, _)) => (next.s, "the next record"),
+                None => (road_length, "the road's end"),
+            };
+            let reach = until - g.s;
+            if !(reach > g.length) {
+                continue;
+            }
+            let rate = if g.length > 0.0 { (end - start) / g.length } else { 0.0 };
+            let turn = start.abs().max((start + rate * reach).abs()) * reach;
+            if !(turn <= MAX_SPIRAL_TURN) {
+                let message = format!(
+                    "runs on {:.4} m beyond its {} m to {what} at s = {until} m, turning by up to {turn:.4e} rad: more than ten full circles",
+                    reach - g.length,
+                    g.length
+                );
+                return Err(self.refuse(*node, "length", message));
+            }
+        }
+        Ok(())
+    }
+
     fn road(&self, node: Node) -> Result<Road> {
         let id = self.text(node, "id")?;
         let length = self.number(node, "length", None)?;
-        let mut plan: Vec<Geometry> =
-            children(child(node, "planView"), "geometry").map(|g| self.geometry(g)).collect::<Result<_>>()?;
-        plan.sort_by(|a, b| a.s.total_cmp(&b.s));
+        let mut plan: Vec<(Geometry, Node)> =
+            children(child(node, "planView"), "geometry").map(|g| Ok((self.geometry(g)?, g))).collect::<Result<_>>()?;
+        plan.sort_by(|a, b| a.0.s.total_cmp(&b.0.s));
+        self.check_reach(&plan, length)?;
+        let plan = plan.into_iter().map(|(g, _)| g).collect();
         let lateral = child(node, "lateralProfile");
         let mut shape: Vec<ShapeGroup> = Vec::new();
         for n in children(lateral, "shape") {

@@ -72,6 +72,20 @@ fn broken_maps_are_refused_with_file_line_and_element() {
     let e = refusal(&spiral("1e7"));
     assert!(e.contains("bad.xodr:5") && e.contains("<spiral>") && e.contains("ten full circles"), "{e}");
     assert!(Map::from_bytes(spiral("10").as_bytes(), Path::new("ok.xodr")).is_ok());
+    // A road running on far beyond its last spiral (length 20020 for 2 km of records, as
+    // a fuzzer wrote it): the spiral would go on turning there; refused, naming the
+    // record. A road a little longer than its records, and one reaching past a line, read.
+    let beyond = |length: &str, shape: &str| {
+        format!(
+            "{ROAD_START}<road id=\"7\" length=\"{length}\"><planView><geometry s=\"0\" x=\"0\" y=\"0\" hdg=\"0\" length=\"10\">\n\
+             {shape}</geometry></planView></road></OpenDRIVE>"
+        )
+    };
+    let spiral_record = "<spiral curvStart=\"0.008\" curvEnd=\"0\"/>";
+    let e = refusal(&beyond("20020", spiral_record));
+    assert!(e.contains("bad.xodr:4") && e.contains("<geometry> length") && e.contains("the road's end"), "{e}");
+    assert!(Map::from_bytes(beyond("10.001", spiral_record).as_bytes(), Path::new("ok.xodr")).is_ok());
+    assert!(Map::from_bytes(beyond("20020", "<line/>").as_bytes(), Path::new("ok.xodr")).is_ok());
     assert!(Map::load("/nonexistent/map.xodr").unwrap_err().to_string().contains("cannot read"));
 }
 
