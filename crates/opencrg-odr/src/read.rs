@@ -212,13 +212,14 @@ impl Reader<'_> {
         children(Some(parent), "surface").flat_map(|s| children(Some(s), "CRG")).map(|c| self.crg(c)).collect()
     }
 
-    /// Refuses a spiral that the road runs on beyond its length (to the next record's s,
-    /// or to the road's end for the last) so far that it turns by more than
-    /// [`MAX_SPIRAL_TURN`] there: the record's curvature goes on changing as it does
-    /// within it, and each point would cost a quadrature over the whole turn.
+    /// Refuses a record the road runs on beyond its length (to the next record's s, or to
+    /// the road's end for the last) where that would cost without bound: a spiral whose
+    /// curvature, changing on as within it, would turn by more than [`MAX_SPIRAL_TURN`]
+    /// there; a cubic curve followed on for more than its own length and a metre (each
+    /// point of it is found by the arc length from its start). Lines and arcs run on in
+    /// closed form.
     fn check_reach(&self, plan: &[(Geometry, Node)], road_length: f64) -> Result<()> {
         for (k, (g, node)) in plan.iter().enumerate() {
-            let Shape::Spiral { start, end } = g.shape else { continue };
             let (until, what) = match plan.get(k + 1) {
                 Some((next, _)) => (next.s, "the next record"),
                 None => (road_length, "the road's end"),
@@ -227,14 +228,24 @@ impl Reader<'_> {
             if !(reach > g.length) {
                 continue;
             }
-            let rate = if g.length > 0.0 { (end - start) / g.length } else { 0.0 };
-            let turn = start.abs().max((start + rate * reach).abs()) * reach;
-            if !(turn <= MAX_SPIRAL_TURN) {
-                let message = format!(
-                    "runs on {:.4} m beyond its {} m to {what} at s = {until} m, turning by up to {turn:.4e} rad: more than ten full circles",
-                    reach - g.length,
-                    g.length
-                );
+            let beyond = format!(
+                "runs on {} m beyond its {} m to {what} at s = {} m",
+                metres(reach - g.length),
+                metres(g.length),
+                metres(until)
+            );
+            let refused = match g.shape {
+                Shape::Line | Shape::Arc { .. } => None,
+                Shape::Spiral { start, end } => {
+                    let rate = if g.length > 0.0 { (end - start) / g.length } else { 0.0 };
+                    let turn = start.abs().max((start + rate * reach).abs()) * reach;
+                    (!(turn <= MAX_SPIRAL_TURN))
+                        .then(|| format!("{beyond}, turning by up to {turn:.4e} rad: more than ten full circles"))
+                }
+                Shape::Poly3 { .. } | Shape::ParamPoly3 { .. } => (!(reach <= 2.0 * g.length + 1.0))
+                    .then(|| format!("{beyond}: a cubic curve is followed on for at most its own length and a metre")),
+            };
+            if let Some(message) = refused {
                 return Err(self.refuse(*node, "length", message));
             }
         }
@@ -350,5 +361,16 @@ impl Map {
             }
         }
         Ok(Map::new(path.to_path_buf(), header, roads, junctions))
+    }
+}
+
+/// A length for a message: to a tenth of a millimetre up to a million kilometres, in
+/// exponent form beyond.
+fn metres(x: f64) -> String {
+    if x.abs() < 1e9 {
+        let fixed = format!("{x:.4}");
+        fixed.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        format!("{x:.4e}")
     }
 }

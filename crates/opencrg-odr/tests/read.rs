@@ -86,6 +86,13 @@ fn broken_maps_are_refused_with_file_line_and_element() {
     assert!(e.contains("bad.xodr:4") && e.contains("<geometry> length") && e.contains("the road's end"), "{e}");
     assert!(Map::from_bytes(beyond("10.001", spiral_record).as_bytes(), Path::new("ok.xodr")).is_ok());
     assert!(Map::from_bytes(beyond("20020", "<line/>").as_bytes(), Path::new("ok.xodr")).is_ok());
+    // A cubic curve followed on for more than its own length again (each point of it
+    // found by the arc length from its start: seconds for a road of 100 km): refused.
+    let cubic = "<paramPoly3 aU=\"0\" bU=\"10\" cU=\"1\" dU=\"0.5\" aV=\"0\" bV=\"0\" cV=\"2\" dV=\"-1\"/>";
+    let e = refusal(&beyond("1e5", cubic));
+    assert!(e.contains("bad.xodr:4") && e.contains("runs on 99990 m beyond its 10 m") && e.contains("cubic"), "{e}");
+    assert!(refusal(&beyond("1e300", "<poly3 a=\"0\" b=\"0.1\" c=\"0\" d=\"0\"/>")).contains("1.0000e300 m"));
+    assert!(Map::from_bytes(beyond("15", cubic).as_bytes(), Path::new("ok.xodr")).is_ok());
     assert!(Map::load("/nonexistent/map.xodr").unwrap_err().to_string().contains("cannot read"));
 }
 
