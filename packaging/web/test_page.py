@@ -1,6 +1,7 @@
 """The web page in headless Chromium, served from WEB on loopback: `?road=...&probe=...`
 for the demo road and the demo map (its CRG file fetched beside it) answers what the
-native command answers (within 1e-9 m), the roughness table holds the command's IRI, and
+native command answers (within 1e-9 m), a damaged road shows the command's message, the
+roughness table holds the command's IRI, and
 the top view, the 3D view and the roughness figure are drawn (screenshots: many pixels in
 the height colours; the tracks' colours on a road's page, not on a map's).
 
@@ -29,6 +30,8 @@ shutil.copytree(web, root / "web")
 (root / "data").mkdir()
 for name in ("demo_road.crg", "demo_map.xodr"):
     shutil.copy(examples / name, root / "data" / name)
+# A damaged road: the demo road cut short.
+(root / "data" / "damaged.crg").write_bytes((examples / "demo_road.crg").read_bytes()[:1500])
 class Quiet(http.server.SimpleHTTPRequestHandler):
     def log_message(self, *args):
         pass
@@ -79,6 +82,12 @@ table = re.search(r'id="roughness">([^<]*)<', dom)[1].splitlines()[1:]
 iri = json.loads(subprocess.run([str(opencrg), "roughness", str(examples / "demo_road.crg"), "--json"],
                                 capture_output=True, text=True, check=True).stdout)["tracks"]
 assert [line.split()[1] for line in table] == [f"{t['iri']:.3f}" for t in iri], (table, iri)
+# A damaged road: the page shows the command's message, and no road.
+dom = chromium(f"{base}?road=../data/damaged.crg&probe=50,3", "--dump-dom")
+error = re.search(r'id="error">([^<]*)<', dom)[1]
+native = subprocess.run([str(opencrg), "info", str(root / "data" / "damaged.crg")], capture_output=True, text=True)
+assert native.returncode != 0 and native.stderr.split(": ", 2)[2].strip() in error, (error, native.stderr)
+assert "No road open." in dom and re.search(r'id="probe">([^<]*)<', dom)[1] == "", dom
 # The map: z friction road s t against `opencrg odr eval`.
 got = probe("road=../data/demo_map.xodr&probe=20,-2")
 native = subprocess.run([str(opencrg), "odr", "eval", str(examples / "demo_map.xodr")], input="20 -2\n",
