@@ -1,9 +1,9 @@
 """The web page in headless Chromium, served from WEB on loopback: `?road=...&probe=...`
 for the demo road and the demo map (its CRG file fetched beside it) answers what the
 native command answers (within 1e-9 m), a damaged road shows the command's message, the
-roughness table holds the command's IRI, and
-the top view, the 3D view and the roughness figure are drawn (screenshots: many pixels in
-the height colours; the tracks' colours on a road's page, not on a map's).
+roughness table holds the command's IRI, and the top view, the 3D view and the roughness
+figure are drawn (screenshots: many pixels in the height colours; the tracks' colours on
+a road's page, not on a map's).
 
 usage: python3 test_page.py WEB OPENCRG EXAMPLES
 """
