@@ -75,12 +75,22 @@ impl RoadIndex {
             for w in cuts.windows(2) {
                 let n = ((w[1] - w[0]) / longest).ceil().clamp(1.0, MAX_STRETCHES) as usize;
                 // The window lies on one record: sampled from it, 4 points a stretch, each
-                // stretch's last point the next one's first.
+                // stretch's last point the next one's first. Inside a cubic curve, each
+                // station is reached from an earlier one as a wheel's is (by the arc length
+                // nearby, not from the curve's start); the window's end is the record's
+                // own (where the next record starts, its station may lie elsewhere).
                 let Some(g) = road.geometry_at(0.5 * (w[0] + w[1])) else { continue };
                 let frame = g.hdg.sin_cos();
-                let sample = |j: usize| {
+                let cubic = matches!(g.shape, Shape::Poly3 { .. } | Shape::ParamPoly3 { .. });
+                let (mut anchor, mut station) = (None, Station::default());
+                let mut sample = |j: usize| {
                     let s = w[0] + (w[1] - w[0]) * j as f64 / (4 * n) as f64;
-                    (s, g.point_in(frame, s - g.s), reach(road, s))
+                    let point = if cubic && j < 4 * n && road.station_at(s, &mut anchor, &mut station) {
+                        [station.pose.x, station.pose.y]
+                    } else {
+                        g.point_in(frame, s - g.s)
+                    };
+                    (s, point, reach(road, s))
                 };
                 let mut first = sample(0);
                 for k in 0..n {
@@ -456,6 +466,28 @@ mod tests {
     /// A small file whose roads say they are 10,000 km long each (a typo a hundred times
     /// over) is indexed in about [`MAX_STRETCHES`] stretches, not a billion, and its points
     /// are found.
+    /// A long cubic curve, sampled station from station: every point along it, and 2 m
+    /// to its left, lies in a stretch of the index around its own s.
+    #[test]
+    fn a_long_cubic_curve_is_indexed_where_it_lies() {
+        let text = "<OpenDRIVE><header revMajor=\"1\" revMinor=\"8\"/><road id=\"1\" length=\"1000\" junction=\"-1\"><planView>\
+            <geometry s=\"0\" x=\"3\" y=\"-2\" hdg=\"0.3\" length=\"1000\"><paramPoly3 aU=\"0\" bU=\"960\" cU=\"60\" dU=\"-20\" \
+            aV=\"0\" bV=\"0\" cV=\"180\" dV=\"-140\"/></geometry></planView>\
+            <lanes><laneSection s=\"0\"><center><lane id=\"0\" type=\"none\"/></center></laneSection></lanes></road></OpenDRIVE>";
+        let map = Map::from_bytes(text.as_bytes(), std::path::Path::new("cubic.xodr")).unwrap();
+        let index = RoadIndex::new(&map);
+        let road = &map.roads[0];
+        for k in 0..=200 {
+            let s = road.length * f64::from(k) / 200.0;
+            let r = road.reference(s);
+            for t in [0.0, 2.0] {
+                let (x, y) = (r.x - t * r.hdg.sin(), r.y + t * r.hdg.cos());
+                let held = index.candidates(x, y).any(|(i, s0, s1)| i == 0 && s0 <= s + 1e-9 && s <= s1 + 1e-9);
+                assert!(held, "s = {s}, t = {t}: no stretch holds it");
+            }
+        }
+    }
+
     #[test]
     fn the_index_stays_in_proportion_to_the_file() {
         let road = |i: usize| {
