@@ -37,10 +37,14 @@ done
 # Every archive carries the FMU binaries of all three platforms, so that its `opencrg fmu`
 # writes FMUs for all of them.
 trees=("opencrg-$version-linux-x86_64" "opencrg-$version-linux-aarch64" "opencrg-$version-windows-x86_64")
+fmu_all=target/dist/fmu-binaries
+rm -rf "$fmu_all"
+mkdir -p "$fmu_all"
 for tree in "${trees[@]}"; do
-    for other in "${trees[@]}"; do
-        cp -r "target/dist/$other/lib/opencrg/fmu/." "target/dist/$tree/lib/opencrg/fmu/"
-    done
+    cp -r "target/dist/$tree/lib/opencrg/fmu/." "$fmu_all/"
+done
+for tree in "${trees[@]}"; do
+    cp -r "$fmu_all/." "target/dist/$tree/lib/opencrg/fmu/"
 done
 for tree in "${trees[@]:0:2}"; do
     tar -C target/dist -czf "target/dist/$tree.tar.gz" "$tree"
