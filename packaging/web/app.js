@@ -162,26 +162,40 @@ function ticks(a, b) {
   return out;
 }
 
-function axes(g, f, xLabel = 'x [m]', yLabel = 'y [m]') {
+/** Linear axes: ticks at round steps, labelled with their values. */
+const LINEAR = { ticks, label: (t) => `${+t.toFixed(6)}` };
+/** Axes over log10 of the values: a tick at each decade. */
+const DECADES = {
+  ticks: (a, b) => Array.from({ length: Math.max(0, Math.floor(b) - Math.ceil(a) + 1) }, (_, i) => Math.ceil(a) + i),
+  label: (d) => `1e${d}`,
+};
+
+/** The frame `f` ({x0, x1, y0, y1, left, top, pw, ph}) with ticks and labels on `scale`. */
+function axes(g, f, xLabel = 'x [m]', yLabel = 'y [m]', scale = LINEAR) {
   g.strokeStyle = '#444';
   g.fillStyle = '#222';
   g.font = '12px sans-serif';
   g.strokeRect(f.left, f.top, f.pw, f.ph);
   g.textAlign = 'center';
-  for (const t of ticks(f.x0, f.x1)) {
+  for (const t of scale.ticks(f.x0, f.x1)) {
     const px = f.left + ((t - f.x0) / (f.x1 - f.x0)) * f.pw;
     g.beginPath(), g.moveTo(px, f.top + f.ph), g.lineTo(px, f.top + f.ph + 5), g.stroke();
-    g.fillText(`${+t.toFixed(6)}`, px, f.top + f.ph + 18);
+    g.fillText(scale.label(t), px, f.top + f.ph + 18);
   }
   g.fillText(xLabel, f.left + f.pw / 2, f.top + f.ph + 34);
   g.textAlign = 'right';
-  for (const t of ticks(f.y0, f.y1)) {
+  for (const t of scale.ticks(f.y0, f.y1)) {
     const py = f.top + ((f.y1 - t) / (f.y1 - f.y0)) * f.ph;
     g.beginPath(), g.moveTo(f.left - 5, py), g.lineTo(f.left, py), g.stroke();
-    g.fillText(`${+t.toFixed(6)}`, f.left - 8, py + 4);
+    g.fillText(scale.label(t), f.left - 8, py + 4);
   }
   g.save(), g.translate(14, f.top + f.ph / 2), g.rotate(-Math.PI / 2), g.textAlign = 'center';
   g.fillText(yLabel, 0, 0), g.restore();
+}
+
+/** The pixel of (x, y) in the frame `f`. */
+function pixel(f, x, y) {
+  return [f.left + ((x - f.x0) / (f.x1 - f.x0)) * f.pw, f.top + ((f.y1 - y) / (f.y1 - f.y0)) * f.ph];
 }
 
 function bar(g, lo, hi, x, top, h) {
@@ -213,20 +227,9 @@ function chart(canvas, xs, ys, xLabel, title) {
   g.font = '12px sans-serif';
   g.textAlign = 'left';
   g.fillText(title, left, 16);
-  axes(g, { x0, x1, y0: lo, y1: hi, left, top, pw, ph }, xLabel, 'z [m]');
-  g.strokeStyle = '#1f5fa8';
-  g.lineWidth = 1.5;
-  g.beginPath();
-  let pen = false;
-  xs.forEach((x, i) => {
-    const y = ys[i];
-    if (!Number.isFinite(y)) return void (pen = false);
-    const [px, py] = [left + ((x - x0) / (x1 - x0)) * pw, top + ((hi - y) / (hi - lo)) * ph];
-    pen ? g.lineTo(px, py) : g.moveTo(px, py);
-    pen = true;
-  });
-  g.stroke();
-  g.lineWidth = 1;
+  const f = { x0, x1, y0: lo, y1: hi, left, top, pw, ph };
+  axes(g, f, xLabel, 'z [m]');
+  polyline(g, f, Array.from(xs, (x, i) => (Number.isFinite(ys[i]) ? [x, ys[i]] : null)), '#1f5fa8', 1.5);
 }
 
 /** The road's sections along u at `v` and across v at `u`. */
@@ -258,29 +261,6 @@ function rough() {
 
 const TRACK_COLOURS = ['#1e5ac8', '#c83c28', '#28963c', '#963caa', '#dc8c14', '#000'];
 
-/** Log-log axes over decades: `f` as for `axes`, x and y as log10 of the values. */
-function logAxes(g, f, xLabel, yLabel) {
-  g.strokeStyle = '#444';
-  g.fillStyle = '#222';
-  g.font = '12px sans-serif';
-  g.strokeRect(f.left, f.top, f.pw, f.ph);
-  g.textAlign = 'center';
-  for (let d = Math.ceil(f.x0); d <= f.x1; d++) {
-    const px = f.left + ((d - f.x0) / (f.x1 - f.x0)) * f.pw;
-    g.beginPath(), g.moveTo(px, f.top + f.ph), g.lineTo(px, f.top + f.ph + 5), g.stroke();
-    g.fillText(`1e${d}`, px, f.top + f.ph + 18);
-  }
-  g.fillText(xLabel, f.left + f.pw / 2, f.top + f.ph + 34);
-  g.textAlign = 'right';
-  for (let d = Math.ceil(f.y0); d <= f.y1; d++) {
-    const py = f.top + ((f.y1 - d) / (f.y1 - f.y0)) * f.ph;
-    g.beginPath(), g.moveTo(f.left - 5, py), g.lineTo(f.left, py), g.stroke();
-    g.fillText(`1e${d}`, f.left - 8, py + 4);
-  }
-  g.save(), g.translate(14, f.top + f.ph / 2), g.rotate(-Math.PI / 2), g.textAlign = 'center';
-  g.fillText(yLabel, 0, 0), g.restore();
-}
-
 /** A line through `points` ([x, y] in the frame's units; null: a gap), clipped to it. */
 function polyline(g, f, points, colour, width) {
   g.save();
@@ -294,8 +274,7 @@ function polyline(g, f, points, colour, width) {
       pen = false;
       continue;
     }
-    const px = f.left + ((p[0] - f.x0) / (f.x1 - f.x0)) * f.pw;
-    const py = f.top + ((f.y1 - p[1]) / (f.y1 - f.y0)) * f.ph;
+    const [px, py] = pixel(f, p[0], p[1]);
     pen ? g.lineTo(px, py) : g.moveTo(px, py);
     pen = true;
   }
@@ -338,7 +317,7 @@ function roughnessFigure(canvas, tracks) {
   g.font = '14px sans-serif';
   g.textAlign = 'left';
   g.fillText(`${shown.name}: displacement PSD and ISO 8608 classes`, left, 24);
-  logAxes(g, top, 'n [cycles/m]', 'Gd(n) [m³]');
+  axes(g, top, 'n [cycles/m]', 'Gd(n) [m³]', DECADES);
   // Gd(n) = Gd(n0) (n / n0)^-2, in log10: a line of slope -2 through (log n0, log Gd(n0)).
   const band = (at) => [[top.x0, at - 2 * (top.x0 - Math.log10(n0))], [top.x1, at - 2 * (top.x1 - Math.log10(n0))]];
   for (const l of limits) polyline(g, top, band(Math.log10(l)), '#969696', 1);
@@ -350,7 +329,10 @@ function roughnessFigure(canvas, tracks) {
     const at = [2, 1, 5, 0.5, 0.2, 0.1, 0.05, 0.02]
       .map((n) => [Math.log10(n), middles[k] - 2 * (Math.log10(n) - Math.log10(n0))])
       .find(([, d]) => d > top.y0 + 0.3 && d < top.y1 - 0.3);
-    if (at) g.fillText(letter, top.left + ((at[0] - top.x0) / (top.x1 - top.x0)) * top.pw, top.top + ((top.y1 - at[1]) / (top.y1 - top.y0)) * top.ph + 4);
+    if (at) {
+      const [px, py] = pixel(top, at[0], at[1]);
+      g.fillText(letter, px, py + 4);
+    }
   });
   tracks.forEach((t, i) => {
     const points = t.bands.filter((b) => b[1] > 0).map(([n, d]) => [Math.log10(n), Math.log10(d)]);
@@ -358,8 +340,7 @@ function roughnessFigure(canvas, tracks) {
     polyline(g, top, points, colour, 2);
     g.fillStyle = colour;
     for (const [x, y] of points) {
-      const px = top.left + ((x - top.x0) / (top.x1 - top.x0)) * top.pw;
-      const py = top.top + ((top.y1 - y) / (top.y1 - top.y0)) * top.ph;
+      const [px, py] = pixel(top, x, y);
       g.beginPath(), g.arc(px, py, 3, 0, 2 * Math.PI), g.fill();
     }
   });

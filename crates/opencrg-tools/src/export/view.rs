@@ -4,7 +4,7 @@
 //! file, the web page shows it in a frame.
 
 use crate::export::map_mesh::{map_mesh, MeshOptions};
-use crate::export::mesh::{grid_mesh_every, Mesh};
+use crate::export::mesh::{grid_mesh_every, json_string, Mesh};
 use crate::export::mesh_files::{write_mesh_to, MeshFormat};
 use opencrg_core::{Budget, ContactPoint, Error, Result};
 use opencrg_odr::Surface;
@@ -68,21 +68,6 @@ fn base64(data: &[u8]) -> String {
 /// Text safe inside an HTML element.
 fn escape(text: &str) -> String {
     text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")
-}
-
-/// Text as a JSON string.
-fn json_string(text: &str) -> String {
-    let mut out = String::from('"');
-    for c in text.chars() {
-        match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
-            c => out.push(c),
-        }
-    }
-    out.push('"');
-    out
 }
 
 /// The view of the surface `cp` evaluates, the road named `name`, over the u and v
