@@ -28,6 +28,7 @@ mod base {
     pub(crate) mod compat;
     pub(crate) mod error;
     pub(crate) mod memory;
+    pub(crate) mod pair;
     pub(crate) mod setting_values;
     pub mod settings;
     pub mod units;

@@ -7,6 +7,7 @@
 //! a scan, and gives exactly the sample a linear scan would (ties go to the lowest
 //! index).
 
+use crate::base::pair::Pair;
 use crate::model::refline::{RefLine, SearchPoint};
 use crate::model::sample_index::SampleIndex;
 
@@ -15,15 +16,14 @@ pub(crate) const DEFAULT_HISTORY: usize = 50;
 
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 struct Entry {
-    x: f64,
-    y: f64,
+    at: Pair,
     index: usize,
 }
 
 /// The newest entry of a history without entries: no point is within reach of a NaN
 /// position (the lookup of the newest entry needs no count), and no search records
 /// its index.
-const NO_ENTRY: Entry = Entry { x: f64::NAN, y: f64::NAN, index: usize::MAX };
+const NO_ENTRY: Entry = Entry { at: Pair([f64::NAN; 2]), index: usize::MAX };
 
 /// The recent results of a contact point, newest first, used to start the search.
 #[derive(Debug, Clone)]
@@ -48,7 +48,7 @@ pub(crate) struct History {
 #[inline]
 fn first_within(entries: &[Entry], x: f64, y: f64, limit: f64) -> Option<usize> {
     let d2 = |e: &Entry| {
-        let (dx, dy) = (x - e.x, y - e.y);
+        let (dx, dy) = (x - e.at.0[0], y - e.at.0[1]);
         dx * dx + dy * dy
     };
     let mut chunks = entries.chunks_exact(4);
@@ -113,15 +113,23 @@ impl History {
         self.ring.get(if k >= self.ring.len() { k - self.ring.len() } else { k })
     }
 
-    /// Makes `e` the newest entry, the previous newest one the second (the ring holds at
-    /// least one entry; never panics).
+    /// Makes (x, y, index) the newest entry, the previous newest one the second (the
+    /// ring holds at least one entry; never panics).
     #[inline]
-    fn push_front(&mut self, e: Entry) {
+    fn push_front(&mut self, x: f64, y: f64, index: usize) {
         if let Some(slot) = self.ring.get_mut(self.head) {
             *slot = self.newest;
         }
         self.head = if self.head == 0 { self.ring.len() - 1 } else { self.head - 1 };
-        self.newest = e;
+        self.set_newest(x, y, index);
+    }
+
+    /// Overwrites the newest entry, its position with one store (the next search reads
+    /// it at once; see [`Pair`]).
+    #[inline(always)]
+    fn set_newest(&mut self, x: f64, y: f64, index: usize) {
+        self.newest.at.set(x, y);
+        self.newest.index = index;
     }
 
     /// Starts the history afresh with the reference line point at `u`.
@@ -132,7 +140,7 @@ impl History {
         let (i, frac) = line.interval(u);
         let x = line.x[i] + frac * (line.x[i + 1] - line.x[i]);
         let y = line.y[i] + frac * (line.y[i + 1] - line.y[i]);
-        self.push_front(Entry { x, y, index: i });
+        self.push_front(x, y, i);
         self.used = 1;
     }
 
@@ -140,7 +148,7 @@ impl History {
     /// The newest entry is the contact point's previous query: along a path, the hit.
     #[inline(always)]
     fn newest_within(&self, x: f64, y: f64) -> Option<usize> {
-        let (dx, dy) = (x - self.newest.x, y - self.newest.y);
+        let (dx, dy) = (x - self.newest.at.0[0], y - self.newest.at.0[1]);
         (dx * dx + dy * dy < self.reach2).then_some(self.newest.index)
     }
 
@@ -154,7 +162,7 @@ impl History {
         (1..self.used.min(RECENT))
             .filter_map(|j| self.entry(j))
             .find(|e| {
-                let (dx, dy) = (x - e.x, y - e.y);
+                let (dx, dy) = (x - e.at.0[0], y - e.at.0[1]);
                 dx * dx + dy * dy < self.reach2
             })
             .map(|e| e.index)
@@ -179,7 +187,7 @@ impl History {
     /// The entries as (x, y, index), newest first, and the ring's size and squared
     /// close and far distances: everything the search reads.
     pub(crate) fn state(&self) -> (usize, f64, f64, Vec<(f64, f64, usize)>) {
-        let entries = (0..self.used).filter_map(|j| self.entry(j)).map(|e| (e.x, e.y, e.index)).collect();
+        let entries = (0..self.used).filter_map(|j| self.entry(j)).map(|e| (e.at.0[0], e.at.0[1], e.index)).collect();
         (self.ring.len(), self.close2, self.far2, entries)
     }
 
@@ -189,7 +197,7 @@ impl History {
         let mut h = History::new(size, close2, far2);
         if size > 0 {
             for &(x, y, index) in entries.iter().take(size).rev() {
-                h.push_front(Entry { x, y, index });
+                h.push_front(x, y, index);
                 h.used += 1;
             }
         }
@@ -203,11 +211,10 @@ impl History {
         if self.ring.len() < 2 {
             return;
         }
-        let e = Entry { x, y, index };
         if self.newest.index == index {
-            self.newest = e;
+            self.set_newest(x, y, index);
         } else {
-            self.push_front(e);
+            self.push_front(x, y, index);
             if self.used < self.ring.len() {
                 self.used += 1;
             }
@@ -284,15 +291,23 @@ fn walk(pts: &[SearchPoint], closed: bool, mut k: usize, x: f64, y: f64) -> Opti
 /// the line has points), so this one needs no count.
 #[inline(always)]
 fn walk_lean(pts: &[SearchPoint], closed: bool, mut k: usize, x: f64, y: f64) -> Option<Walked<'_>> {
-    let mut at_k = pts.get(k)?.ahead(x, y);
-    while at_k > 0.0 {
+    let mut b = pts.get(k)?;
+    let mut at_k = b.ahead(x, y);
+    if !(at_k > 0.0) {
+        return walk_back(pts, closed, k, at_k, x, y);
+    }
+    loop {
         let Some(next) = pts.get(k + 1) else {
             return (!closed).then(|| walk_back(pts, closed, k, at_k, x, y)).flatten();
         };
-        k += 1;
-        at_k = next.ahead(x, y);
+        let (a, behind) = (b, at_k);
+        (k, b, at_k) = (k + 1, next, next.ahead(x, y));
+        if !(at_k > 0.0) {
+            // The point lies ahead of point k - 1 (`behind` > 0): where the backward walk
+            // would stop at once, with the value it would compute again.
+            return Some(Walked { k, a, b, behind, at_k });
+        }
     }
-    walk_back(pts, closed, k, at_k, x, y)
 }
 
 /// The backward part of [`walk_lean`], from point `k` where the point lies `at_k`
@@ -456,7 +471,7 @@ mod tests {
                 let (x, y) = (10.0 * random(), 10.0 * random());
                 let hit = (0..h.used).find(|&j| {
                     let e = h.entry(j).unwrap();
-                    let d2 = (x - e.x) * (x - e.x) + (y - e.y) * (y - e.y);
+                    let d2 = (x - e.at.0[0]) * (x - e.at.0[0]) + (y - e.at.0[1]) * (y - e.at.0[1]);
                     d2 < h.close2 || d2 < h.far2
                 });
                 assert_eq!(h.lookup(x, y), hit.map(|j| h.entry(j).unwrap().index), "size {size}, step {step}");
@@ -558,7 +573,7 @@ mod tests {
         h.record(10.0, 0.0, 6);
         h.record(20.0, 0.0, 6);
         assert_eq!(h.used, 2);
-        assert_eq!(h.entry(0).unwrap().x, 20.0);
+        assert_eq!(h.entry(0).unwrap().at.0[0], 20.0);
         assert_eq!(h.lookup(0.5, 0.0), Some(5));
         assert_eq!(h.lookup(100.0, 0.0), None);
     }
