@@ -12,9 +12,9 @@ use crate::model::road::Road;
 use crate::query::eval::EvalOptions;
 use crate::query::interpolation::{bilinear, corner_terms, lerp_at, lerp_terms};
 
-/// How far ahead along u (in values) a lookup entering a cell asks for the reference
-/// line channels it reads (elevation, banking): two cache lines, a few steps of a wheel
-/// at 50 m/s on 1 cm cross sections.
+/// How far ahead along u (in values) an elevation lookup asks for the reference line
+/// channels it reads (elevation, banking): two cache lines, a few steps of a wheel at
+/// 50 m/s on 1 cm cross sections.
 const CHANNEL_AHEAD: usize = 16;
 
 /// How a reference line channel (elevation or banking) enters the common case.
@@ -153,17 +153,11 @@ impl PlainGrid {
         prefetch_cell_far_from(self.corner(cell), self.nu);
     }
 
-    /// Asks the processor to start loading what a wheel moving on from `cell` reads next:
-    /// the grid (see [`prefetch_path_from`]) and the reference line channels
-    /// [`CHANNEL_AHEAD`] values on. The addresses are only computed, never read.
+    /// Asks the processor to start loading what a wheel moving on from `cell` reads next
+    /// (see [`prefetch_path_from`]).
     #[inline(always)]
     pub(crate) fn prefetch_path(&self, cell: &PlainCell) {
         prefetch_path_from(self.corner(cell), self.nu, cell.fv > 0.5);
-        for term in [&self.line_z, &self.bank] {
-            if let LineTerm::Channel(c) = *term {
-                crate::base::memory::prefetch(c.wrapping_add(cell.iu + CHANNEL_AHEAD));
-            }
-        }
     }
 
     /// The terms of `cell`'s grid values, read from the road.
@@ -190,8 +184,12 @@ impl PlainGrid {
     #[inline(always)]
     pub(crate) unsafe fn elevation(&self, t: &CellTerms, cell: &PlainCell) -> f64 {
         let iu = cell.iu;
-        // SAFETY: the channel has nu values and iu + 1 <= nu - 1 (the contract above).
-        let channel = |c: *const f64| unsafe { lerp_at(lerp_terms(*c.add(iu), *c.add(iu + 1)), cell.fu) };
+        let channel = |c: *const f64| {
+            // What a wheel moving on reads some steps later (only the address is computed).
+            crate::base::memory::prefetch(c.wrapping_add(iu + CHANNEL_AHEAD));
+            // SAFETY: the channel has nu values and iu + 1 <= nu - 1 (the contract above).
+            unsafe { lerp_at(lerp_terms(*c.add(iu), *c.add(iu + 1)), cell.fu) }
+        };
         let mut z = bilinear(&t.corners, cell.fu, cell.fv) + self.mean;
         z += match self.line_z {
             LineTerm::Channel(c) => channel(c),
