@@ -288,7 +288,9 @@ fn walk(pts: &[SearchPoint], closed: bool, mut k: usize, x: f64, y: f64) -> Opti
 /// [`walk`] where it stays between the line's ends: the same steps and result, or
 /// `None` where the walk would go around a closed track's end. On an open line the
 /// general walk never reaches its step limit (each direction takes fewer steps than
-/// the line has points), so this one needs no count.
+/// the line has points), so this one needs no count. Where the walk moved on to a new
+/// point, it asks the caches for the road ahead (`seg_len`, the segment lengths, only
+/// for that; see [`PREFETCH_AHEAD`]).
 #[inline(always)]
 fn walk_lean<'p>(
     pts: &'p [SearchPoint],
