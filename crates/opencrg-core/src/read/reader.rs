@@ -40,7 +40,7 @@ impl std::ops::Deref for FileBytes {
 impl FileBytes {
     /// Lets the system drop the mapped pages in `start..end` from this process's
     /// memory: they have been decoded and will not be read again (see
-    /// [`crate::memory::release_mapped`]).
+    /// [`crate::base::memory::release_mapped`]).
     pub(crate) fn release(&self, start: usize, end: usize) {
         const PAGE: usize = 4096;
         if let FileBytes::Mapped(map) = self {
