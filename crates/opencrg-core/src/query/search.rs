@@ -20,6 +20,15 @@ struct Entry {
     index: usize,
 }
 
+impl Entry {
+    /// The squared distance from (x, y) to the entry's position.
+    #[inline(always)]
+    fn distance2(&self, x: f64, y: f64) -> f64 {
+        let (dx, dy) = (x - self.at.0[0], y - self.at.0[1]);
+        dx * dx + dy * dy
+    }
+}
+
 /// The newest entry of a history without entries: no point is within reach of a NaN
 /// position (the lookup of the newest entry needs no count), and no search records
 /// its index.
@@ -47,10 +56,7 @@ pub(crate) struct History {
 /// tested four at a time, so that their distances are computed side by side.
 #[inline]
 fn first_within(entries: &[Entry], x: f64, y: f64, limit: f64) -> Option<usize> {
-    let d2 = |e: &Entry| {
-        let (dx, dy) = (x - e.at.0[0], y - e.at.0[1]);
-        dx * dx + dy * dy
-    };
+    let d2 = |e: &Entry| e.distance2(x, y);
     let mut chunks = entries.chunks_exact(4);
     for chunk in chunks.by_ref() {
         let near = [d2(&chunk[0]) < limit, d2(&chunk[1]) < limit, d2(&chunk[2]) < limit, d2(&chunk[3]) < limit];
@@ -148,8 +154,7 @@ impl History {
     /// The newest entry is the contact point's previous query: along a path, the hit.
     #[inline(always)]
     fn newest_within(&self, x: f64, y: f64) -> Option<usize> {
-        let (dx, dy) = (x - self.newest.at.0[0], y - self.newest.at.0[1]);
-        (dx * dx + dy * dy < self.reach2).then_some(self.newest.index)
+        (self.newest.distance2(x, y) < self.reach2).then_some(self.newest.index)
     }
 
     /// [`History::lookup`] among the [`RECENT`] newest entries only: its answer when
@@ -161,10 +166,7 @@ impl History {
         }
         (1..self.used.min(RECENT))
             .filter_map(|j| self.entry(j))
-            .find(|e| {
-                let (dx, dy) = (x - e.at.0[0], y - e.at.0[1]);
-                dx * dx + dy * dy < self.reach2
-            })
+            .find(|e| e.distance2(x, y) < self.reach2)
             .map(|e| e.index)
     }
 
@@ -288,33 +290,23 @@ fn walk(pts: &[SearchPoint], closed: bool, mut k: usize, x: f64, y: f64) -> Opti
 /// [`walk`] where it stays between the line's ends: the same steps and result, or
 /// `None` where the walk would go around a closed track's end. On an open line the
 /// general walk never reaches its step limit (each direction takes fewer steps than
-/// the line has points), so this one needs no count. Where the walk moved on to a new
-/// point, it asks the caches for the road ahead (`seg_len`, the segment lengths, only
-/// for that; see [`PREFETCH_AHEAD`]).
+/// the line has points), so this one needs no count.
 #[inline(always)]
-fn walk_lean<'p>(
-    pts: &'p [SearchPoint],
-    seg_len: &[f64],
-    closed: bool,
-    mut k: usize,
-    x: f64,
-    y: f64,
-) -> Option<Walked<'p>> {
+fn walk_lean(pts: &[SearchPoint], closed: bool, mut k: usize, x: f64, y: f64) -> Option<Walked<'_>> {
     let mut b = pts.get(k)?;
     let mut at_k = b.ahead(x, y);
     if !(at_k > 0.0) {
-        return walk_back(pts, seg_len, closed, k, at_k, x, y);
+        return walk_back(pts, closed, k, at_k, x, y);
     }
     loop {
         let Some(next) = pts.get(k + 1) else {
-            return (!closed).then(|| walk_back(pts, seg_len, closed, k, at_k, x, y)).flatten();
+            return (!closed).then(|| walk_back(pts, closed, k, at_k, x, y)).flatten();
         };
         let (a, behind) = (b, at_k);
         (k, b, at_k) = (k + 1, next, next.ahead(x, y));
         if !(at_k > 0.0) {
             // The point lies ahead of point k - 1 (`behind` > 0): where the backward walk
             // would stop at once, with the value it would compute again.
-            prefetch_point(pts, seg_len, k.wrapping_add(PREFETCH_AHEAD));
             return Some(Walked { k, a, b, behind, at_k });
         }
     }
@@ -323,24 +315,11 @@ fn walk_lean<'p>(
 /// The backward part of [`walk_lean`], from point `k` where the point lies `at_k`
 /// ahead: iterates the points before `k`, newest index first, with no index checks.
 #[inline(always)]
-fn walk_back<'p>(
-    pts: &'p [SearchPoint],
-    seg_len: &[f64],
-    closed: bool,
-    k: usize,
-    mut at_k: f64,
-    x: f64,
-    y: f64,
-) -> Option<Walked<'p>> {
+fn walk_back(pts: &[SearchPoint], closed: bool, k: usize, mut at_k: f64, x: f64, y: f64) -> Option<Walked<'_>> {
     let mut b = pts.get(k)?;
     for (i, a) in pts.get(..k)?.iter().enumerate().rev() {
         let behind = a.ahead(x, y);
         if !(behind < 0.0) {
-            if i + 2 < k {
-                // Walked back past the point before the start (the start is one beyond
-                // the last search's segment): the wheel moves towards smaller u.
-                prefetch_point(pts, seg_len, i.wrapping_sub(PREFETCH_AHEAD));
-            }
             return Some(Walked { k: i + 1, a, b, behind, at_k });
         }
         if i == 0 {
@@ -440,7 +419,8 @@ pub(crate) fn xy_to_uv_lean(
     // the line the walk declines, and from 0 it either steps forward to where the
     // general walk starting at 1 ends or declines.
     let start = history.recent_within(x, y)?;
-    let walked = walk_lean(pts, &line.seg_len, line.closed.is_some(), start, x, y)?;
+    let walked = walk_lean(pts, line.closed.is_some(), start, x, y)?;
+    prefetch_ahead(line, start, walked.k);
     let found = solve(line, closed_search, walked, x, y)?;
     history.record(x, y, (walked.k + 1).min(n - 1));
     Some(found)
@@ -451,12 +431,22 @@ pub(crate) fn xy_to_uv_lean(
 /// 50 m/s on points 1 cm apart, ten steps of 1 ms), fetched while this call computes.
 const PREFETCH_AHEAD: usize = 48;
 
-/// Asks the caches for the search record and the segment length of point `i` (any
-/// index: the addresses are only computed, never read).
+/// Asks the caches for the search record and the segment length [`PREFETCH_AHEAD`]
+/// points beyond `k`, where a walk from `start` ended at segment `k - 1`..`k`, when it
+/// moved on to a new point: forward (`k > start`), or back beyond the point before the
+/// start (`k + 1 < start`; a start is one beyond the last search's segment). The
+/// addresses are only computed, never read.
 #[inline(always)]
-fn prefetch_point(pts: &[SearchPoint], seg_len: &[f64], i: usize) {
-    crate::base::memory::prefetch(pts.as_ptr().wrapping_add(i));
-    crate::base::memory::prefetch(seg_len.as_ptr().wrapping_add(i));
+fn prefetch_ahead(line: &RefLine, start: usize, k: usize) {
+    let i = if k > start {
+        k.wrapping_add(PREFETCH_AHEAD)
+    } else if k + 1 < start {
+        k.wrapping_sub(PREFETCH_AHEAD)
+    } else {
+        return;
+    };
+    crate::base::memory::prefetch(line.search.as_ptr().wrapping_add(i));
+    crate::base::memory::prefetch(line.seg_len.as_ptr().wrapping_add(i));
 }
 
 /// Finds (u, v) of the point (x, y), starting from the history (or, without a hit
