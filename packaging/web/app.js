@@ -178,14 +178,14 @@ function axes(g, f, xLabel = 'x [m]', yLabel = 'y [m]', scale = LINEAR) {
   g.strokeRect(f.left, f.top, f.pw, f.ph);
   g.textAlign = 'center';
   for (const t of scale.ticks(f.x0, f.x1)) {
-    const px = f.left + ((t - f.x0) / (f.x1 - f.x0)) * f.pw;
+    const [px] = pixel(f, t, f.y0);
     g.beginPath(), g.moveTo(px, f.top + f.ph), g.lineTo(px, f.top + f.ph + 5), g.stroke();
     g.fillText(scale.label(t), px, f.top + f.ph + 18);
   }
   g.fillText(xLabel, f.left + f.pw / 2, f.top + f.ph + 34);
   g.textAlign = 'right';
   for (const t of scale.ticks(f.y0, f.y1)) {
-    const py = f.top + ((f.y1 - t) / (f.y1 - f.y0)) * f.ph;
+    const [, py] = pixel(f, f.x0, t);
     g.beginPath(), g.moveTo(f.left - 5, py), g.lineTo(f.left, py), g.stroke();
     g.fillText(scale.label(t), f.left - 8, py + 4);
   }
