@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
-"""Summarises the output of bench/vehicle_compare.sh: per road and case, the median and
-range (min-max) over the runs of the time per call and the medians of the latency
-quantiles, for this project's library ("opencrg") and the other one, and the ratio of
-the times of each pair of runs taken in turn (other / opencrg: how many times faster this
-library is), its median and range.
+"""Summarises the output of bench/vehicle_compare.sh (and bench/in_place.sh): per road and
+case, the median and range (min-max) over the runs of the time per call and the medians of
+the latency quantiles, for the base ("opencrg", or BASE) and the other one, and the ratio
+of the times of each pair of runs taken in turn (other / base: how many times faster the
+base is), its median and range.
 
 usage: vehicle_report.py RESULTS   (lines "ROAD LIB RUN case CALL SPEED MODE THREADS ns N
-p50 N p99 N p999 N max N" and "ROAD LIB RUN cpu MODEL"); MARKDOWN=1 prints Markdown tables.
+p50 N p99 N p999 N max N" and "ROAD LIB RUN cpu MODEL"); MARKDOWN=1 prints Markdown tables;
+BASE=LABEL names the base (default opencrg).
 """
 import os
 import statistics
@@ -33,7 +34,8 @@ def main(path):
         return statistics.median(vals), min(vals), max(vals)
 
     for road, cases in rows.items():
-        libs = sorted({lib for per in cases.values() for lib in per}, key=lambda l: l != "opencrg")
+        base = os.environ.get("BASE", "opencrg")
+        libs = sorted({lib for per in cases.values() for lib in per}, key=lambda l: l != base)
         print(f"\n{road} ({max(len(r) for per in cases.values() for r in per.values())} runs per library)\n")
         head = ["call", "m/s", "contact points", "threads"]
         for lib in libs:

@@ -77,8 +77,19 @@ pub fn text(road: &Road, path: &str) -> String {
             None => "no".into(),
         },
     );
-    line("elevation", format!("{:.4} .. {:.4} m", s.z_min, s.z_max));
-    line("NaN cells", format!("{}", g.values().iter().filter(|z| z.is_nan()).count()));
+    match g.in_memory() {
+        Some(values) => {
+            line("elevation", format!("{:.4} .. {:.4} m", s.z_min, s.z_max));
+            line("NaN cells", format!("{}", values.iter().filter(|z| z.is_nan()).count()));
+        }
+        None => line(
+            "grid",
+            format!(
+                "read in place ({} tiles of the file read so far); its range and NaN cells are not scanned",
+                g.tiles_read()
+            ),
+        ),
+    }
     let o = road.global_origin();
     if o != Default::default() {
         line("global origin", format!("x {} m, y {} m, z {} m, heading {} rad", o.x, o.y, o.z, o.phi));

@@ -27,6 +27,8 @@ mod base {
     pub mod budget;
     pub(crate) mod compat;
     pub(crate) mod error;
+    pub(crate) mod fault_guard;
+    pub(crate) mod mapped_file;
     pub(crate) mod memory;
     pub(crate) mod pair;
     pub(crate) mod setting_values;
@@ -37,10 +39,13 @@ mod model {
     pub mod georef;
     pub mod grid;
     pub mod header;
+    pub(crate) mod in_place;
+    pub(crate) mod nan_borders;
     pub mod refline;
     pub mod report;
     pub(crate) mod road;
     pub(crate) mod sample_index;
+    pub mod tiles;
 }
 mod read {
     pub(crate) mod build;
@@ -83,8 +88,8 @@ pub use base::{budget, settings, units};
 pub use geo::earth::Earth;
 pub use geo::map_check::map_disagreements;
 pub use model::header::{Channel, DataFormat};
-pub use model::road::{LoadOptions, Road};
-pub use model::{georef, grid, header, refline, report};
+pub use model::road::{LoadOptions, ReadInPlace, Road, DEFAULT_IN_PLACE_FROM, DEFAULT_TILE_CACHE};
+pub use model::{georef, grid, header, refline, report, tiles};
 pub use parts::draft;
 pub use query::batch::Evaluation;
 pub use query::contact::{ContactPoint, SearchHistory};

@@ -21,7 +21,24 @@ fn eval2(
     b: Option<&mut f64>,
     f: impl FnOnce(&mut ContactPoint) -> opencrg_core::Result<(f64, f64)> + Send,
 ) -> c_int {
-    put_pair(a, b, || answer_as(name, None, |call| call.on_cp(cp_id, |cp| f(cp).ok()).flatten()))
+    let answered = put_pair(a, b, || answer_as(name, None, |call| call.on_cp(cp_id, |cp| f(cp).ok()).flatten()));
+    if answered == 0 {
+        tell_fault(name, cp_id);
+    }
+    answered
+}
+
+/// After a refusal: when the contact point's road is read in place and its file was cut
+/// short or changed, a warning naming the file (the reference's refusals are silent;
+/// this one has a cause the caller must hear of).
+#[cold]
+#[inline(never)]
+fn tell_fault(name: fn() -> &'static str, cp_id: c_int) {
+    answer_as(name, (), |call| {
+        if let Some(Some(text)) = call.on_cp(cp_id, |cp| cp.road().grid().fault().map(|e| e.to_string())) {
+            call.warn(&format!("{}: {text}", call.name()));
+        }
+    });
 }
 
 /// An evaluation giving one value: 1, or 0 when the output is missing or the id unknown,
@@ -33,7 +50,7 @@ fn eval1(
     f: impl FnOnce(&mut ContactPoint) -> opencrg_core::Result<f64> + Send,
 ) -> c_int {
     let Some(out) = out else { return 0 };
-    answer_as(name, 0, |call| {
+    let answered = answer_as(name, 0, |call| {
         call.on_cp(cp_id, |cp| match f(cp) {
             Ok(z) => {
                 *out = z;
@@ -45,7 +62,11 @@ fn eval1(
             }
         })
         .unwrap_or(0)
-    })
+    });
+    if answered == 0 {
+        tell_fault(name, cp_id);
+    }
+    answered
 }
 
 /// The x/y search of the general way: without a second try of the lean search where it
@@ -103,9 +124,14 @@ pub unsafe extern "C" fn crgEvaluv2xy(cpId: c_int, u: f64, v: f64, x: *mut f64, 
 #[no_mangle]
 pub unsafe extern "C" fn crgEvaluv2z(cpId: c_int, u: f64, v: f64, z: *mut f64) -> c_int {
     /// Every case but the common one (a function of its own, so that the common case needs
-    /// no stack frame).
+    /// no stack frame): first that of a road read in place (the owner's way too: the
+    /// core's lean path over the tiles at hand), then the general way.
     #[inline(never)]
     fn general(cpId: c_int, u: f64, v: f64, z: &mut f64) -> c_int {
+        if let Some(Some(value)) = registry::with_owned_cp_mut(cpId, |cp| cp.uv_to_z_placed(u, v)) {
+            *z = value;
+            return 1;
+        }
         eval1(call_name!(), cpId, Some(z), |cp| cp.uv_to_z(u, v))
     }
     counted!(cpId, {
@@ -136,6 +162,17 @@ pub unsafe extern "C" fn crgEvalxy2z(cpId: c_int, x: f64, y: f64, z: *mut f64) -
             cp.z_of_found(u, v)
         })
     }
+    /// The elevation at the (u, v) a lean search found where the common case of a grid in
+    /// memory does not apply: that of a road read in place the owner's way, else the
+    /// general way.
+    #[inline(never)]
+    fn found(cpId: c_int, u: f64, v: f64, z: &mut f64) -> c_int {
+        if let Some(Some(value)) = registry::with_owned_cp_mut(cpId, |cp| cp.uv_to_z_placed(u, v)) {
+            *z = value;
+            return 1;
+        }
+        eval1(call_name!(), cpId, Some(z), |cp| cp.z_of_found(u, v))
+    }
     counted!(cpId, {
         // SAFETY: the contract above.
         let Some(z) = (unsafe { out(z) }) else { return 0 };
@@ -149,7 +186,7 @@ pub unsafe extern "C" fn crgEvalxy2z(cpId: c_int, x: f64, y: f64, z: *mut f64) -
                 *z = value;
                 1
             }
-            Some(Some(Err((u, v)))) => eval1(call_name!(), cpId, Some(z), |cp| cp.z_of_found(u, v)),
+            Some(Some(Err((u, v)))) => found(cpId, u, v, z),
             declined => general(cpId, declined.is_some(), x, y, z),
         }
     })

@@ -32,7 +32,11 @@ pub unsafe extern "C" fn crgLoaderReadFile(filename: *const c_char) -> c_int {
             }
         };
         // The statistics block costs a scan of the grid: only when it will be printed.
-        let options = opencrg_core::LoadOptions { compat, report_statistics: msg::level() >= msg::NOTICE };
+        let options = opencrg_core::LoadOptions {
+            compat,
+            report_statistics: msg::level() >= msg::NOTICE,
+            ..opencrg_core::LoadOptions::default()
+        };
         match Road::load_with(&path, options) {
             Ok(mut road) => {
                 // The file's WARN_MSGS counts the messages of its own loading, as the

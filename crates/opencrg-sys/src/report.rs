@@ -32,6 +32,9 @@ pub(crate) fn send(call: &Call, events: Vec<Event>) {
             ),
             Event::NansHandled(0) => send(NOTICE, &format!("{func}: no NaN in the elevation grid")),
             Event::NansHandled(n) => send(NOTICE, &format!("{func}: {n} NaN cells at the grid borders handled")),
+            Event::NansHandledWhereRead => {
+                send(NOTICE, &format!("{func}: NaN cells at the grid borders are handled where the grid is read (read in place)"))
+            }
             Event::Relocated { center, angle, shift } => send(
                 DEBUG,
                 &format!(
@@ -40,6 +43,15 @@ pub(crate) fn send(call: &Call, events: Vec<Event>) {
                 ),
             ),
         }
+    }
+}
+
+/// A line of the lowest or highest elevation (not scanned for a grid read in place).
+fn extreme(what: &str, z: f64) -> String {
+    if z.is_nan() {
+        format!("        {what}               [m]: not scanned (the grid is read in place)")
+    } else {
+        format!("        {what}               [m]: {z:10.4}")
     }
 }
 
@@ -55,8 +67,8 @@ fn statistics(call: &Call, s: &Statistics) {
         "    elevation of the grid".to_string(),
         format!("        mean at the start     [m]: {:10.4}", s.z_mean_start),
         format!("        mean at the end       [m]: {:10.4}", s.z_mean_end),
-        format!("        lowest                [m]: {:10.4}", s.z_min),
-        format!("        highest               [m]: {:10.4}", s.z_max),
+        extreme("lowest ", s.z_min),
+        extreme("highest", s.z_max),
         "    reference line".to_string(),
         format!("        first u               [m]: {:10.4}", s.u_first),
         format!("        last u                [m]: {:10.4}", s.u_last),

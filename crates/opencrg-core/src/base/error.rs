@@ -128,6 +128,17 @@ impl From<crate::base::settings::SettingError> for Error {
     }
 }
 
+impl From<Error> for std::io::Error {
+    /// The error as an I/O error (for writers and readers that speak in those).
+    fn from(e: Error) -> Self {
+        let kind = match &e {
+            Error::NotFound { source, .. } | Error::Io { source, .. } => source.kind(),
+            _ => std::io::ErrorKind::Other,
+        };
+        std::io::Error::new(kind, e.to_string())
+    }
+}
+
 /// Shorthand for results of this crate.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
 

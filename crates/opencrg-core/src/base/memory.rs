@@ -24,6 +24,17 @@ pub(crate) fn large_zeroed(len: usize) -> Vec<f32> {
     v
 }
 
+/// `len` atomics of value 0 in memory the system gives zeroed (only what is written is
+/// backed), advised to use huge pages.
+pub(crate) fn large_zeroed_atomics(len: usize) -> Box<[std::sync::atomic::AtomicU32]> {
+    let mut v = std::mem::ManuallyDrop::new(vec![0u32; len]);
+    advise_huge_pages(v.as_ptr().cast(), v.len() * std::mem::size_of::<u32>());
+    // SAFETY: AtomicU32 has the size, alignment and bit validity of u32; the vector's
+    // allocation is handed over whole.
+    unsafe { Vec::from_raw_parts(v.as_mut_ptr().cast::<std::sync::atomic::AtomicU32>(), v.len(), v.capacity()) }
+        .into_boxed_slice()
+}
+
 /// A copy of `values` in memory advised to use huge pages.
 pub(crate) fn large_copy<T: Copy>(values: &[T]) -> Vec<T> {
     let mut v = large_vec(values.len());

@@ -1,7 +1,14 @@
 //! The elevation grid: single-precision z values over (u index, v index), with the
-//! positions of the long sections.
+//! positions of the long sections; the values in memory, or read in place from a binary
+//! file (see `in_place` and `tiles`).
 
+use crate::base::error::Error;
 use crate::base::settings::NanMode;
+use crate::model::in_place::{RowWalker, ValueOp};
+use crate::model::nan_borders::fill_row_nans;
+use crate::model::tiles::Tiles;
+use std::ops::Range;
+use std::sync::{Arc, OnceLock};
 
 /// How the v positions of the long sections were defined.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -12,21 +19,48 @@ pub enum VLayout {
     Explicit,
 }
 
+/// Where a grid's values are.
+#[derive(Debug)]
+pub(crate) enum Store {
+    /// In memory, NaN where the file has none, long section by long section (`iv * nu + iu`).
+    Memory(Vec<f32>),
+    /// Read in place from a binary file, through a pool of decoded tiles.
+    InPlace(InPlace),
+}
+
+/// The values of a grid read in place.
+#[derive(Debug)]
+pub(crate) struct InPlace {
+    pub(crate) tiles: Arc<Tiles>,
+    /// Every value, read when [`Grid::values`] is first asked for.
+    whole: OnceLock<Vec<f32>>,
+}
+
+impl InPlace {
+    /// Values read in place through `tiles`.
+    pub(crate) fn new(tiles: Tiles) -> Self {
+        InPlace { tiles: Arc::new(tiles), whole: OnceLock::new() }
+    }
+}
+
 /// Elevation grid: single-precision z values at (cross section `iu`, long section `iv`).
 ///
-/// The values are stored long section by long section (`iv * nu + iu`), as the
-/// reference library keeps them: a wheel moving along the road reads neighbouring
+/// In memory the values are stored long section by long section (`iv * nu + iu`), as
+/// the reference library keeps them: a wheel moving along the road reads neighbouring
 /// values, and a lookup anywhere touches two runs of memory (the two long sections of
-/// its cell), as a cross-section-major layout would. [`Grid::at`],
-/// [`Grid::long_section`], [`Grid::cross_section`] and [`Grid::values`] read them.
-#[derive(Debug, PartialEq)]
+/// its cell), as a cross-section-major layout would. A grid read in place (see
+/// [`Grid::is_in_place`]) reads them from its file where they are asked for.
+/// [`Grid::at`] and [`Grid::rows`] read either; [`Grid::in_memory`] gives the values of
+/// a grid in memory; [`Grid::values`], [`Grid::long_section`] and
+/// [`Grid::cross_section`] read a grid in place whole first.
+#[derive(Debug)]
 pub struct Grid {
     /// Number of cross sections (u samples).
     pub nu: usize,
     /// Number of long sections (v samples).
     pub nv: usize,
-    /// z values, NaN where the file has none, long section by long section.
-    pub(crate) z: Vec<f32>,
+    /// The values.
+    pub(crate) store: Store,
     /// Offset added to every z value (changed by scaling and relocation).
     pub mean: f64,
     /// v positions of the long sections, increasing.
@@ -111,46 +145,202 @@ pub(crate) fn prefetch_path_from(p: *const f32, nu: usize, upper: bool) {
 
 impl Clone for Grid {
     fn clone(&self) -> Self {
-        Grid { z: crate::base::memory::large_copy(&self.z), v: self.v.clone(), v_table: self.v_table.clone(), ..*self }
+        let store = match &self.store {
+            Store::Memory(z) => Store::Memory(crate::base::memory::large_copy(z)),
+            Store::InPlace(p) => Store::InPlace(InPlace { tiles: p.tiles.clone(), whole: OnceLock::new() }),
+        };
+        Grid { store, v: self.v.clone(), v_table: self.v_table.clone(), ..*self }
+    }
+}
+
+impl PartialEq for Grid {
+    /// Grids are equal when their sizes, positions and values are (a grid in place and
+    /// one in memory with the same values too; a grid in place is then read whole).
+    fn eq(&self, other: &Grid) -> bool {
+        let same_values = match (&self.store, &other.store) {
+            (Store::InPlace(a), Store::InPlace(b)) if Arc::ptr_eq(&a.tiles, &b.tiles) => true,
+            _ => {
+                let (a, b) = (self.values(), other.values());
+                a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
+            }
+        };
+        (self.nu, self.nv, self.mean, &self.v, self.v_first, self.v_last, self.v_inc, self.layout)
+            == (other.nu, other.nv, other.mean, &other.v, other.v_first, other.v_last, other.v_inc, other.layout)
+            && same_values
     }
 }
 
 impl Grid {
-    /// Asks the processor to start loading the values of the cell whose first corner
-    /// is (`iu`, `iv`). The address is only computed, never read.
+    /// Where the values of a grid in memory start (null for a grid in place: the
+    /// prefetches aimed from it then ask for memory nobody reads, which costs nothing).
     #[inline(always)]
-    pub(crate) fn prefetch_cell(&self, iu: usize, iv: usize) {
-        let p = self.z.as_ptr().wrapping_add(iv.wrapping_mul(self.nu).wrapping_add(iu));
-        crate::base::memory::prefetch(p);
-        crate::base::memory::prefetch(p.wrapping_add(self.nu));
+    pub(crate) fn memory_ptr(&self) -> *const f32 {
+        match &self.store {
+            Store::Memory(z) => z.as_ptr(),
+            Store::InPlace(_) => std::ptr::null(),
+        }
     }
 
-    /// [`prefetch_path_from`] for the cell whose first corner is (`iu`, `iv`).
+    /// The values of the cell whose first corner is (`iu`, `iv`): (iu, iv), (iu + 1, iv),
+    /// (iu, iv + 1), (iu + 1, iv + 1); `None` when that cell is not in the grid. A grid in
+    /// place that cannot read them answers NaN (its [`Grid::fault`] tells why).
     #[inline(always)]
-    pub(crate) fn prefetch_path(&self, iu: usize, iv: usize, upper: bool) {
-        prefetch_path_from(self.z.as_ptr().wrapping_add(iv.wrapping_mul(self.nu).wrapping_add(iu)), self.nu, upper);
+    pub(crate) fn corners(&self, iu: usize, iv: usize) -> Option<[f32; 4]> {
+        match &self.store {
+            Store::Memory(z) => {
+                let cell = z.get(iv.wrapping_mul(self.nu).wrapping_add(iu)..)?.get(..self.nu.wrapping_add(2))?;
+                let (&[c00, c10], &[c01, c11]) = (cell.first_chunk::<2>()?, cell.last_chunk::<2>()?);
+                Some([c00, c10, c01, c11])
+            }
+            Store::InPlace(p) => {
+                if iu.wrapping_add(1) >= self.nu || iv.wrapping_add(1) >= self.nv {
+                    return None;
+                }
+                Some(p.tiles.corners(iu, iv).unwrap_or([f32::NAN; 4]))
+            }
+        }
     }
 
-    /// The z value at (u index, v index), without the mean offset.
+    /// Whether the values are read in place from the file (else they are in memory).
+    pub fn is_in_place(&self) -> bool {
+        matches!(self.store, Store::InPlace(_))
+    }
+
+    /// The tile pool of a grid read in place.
+    pub(crate) fn tiles(&self) -> Option<&Arc<Tiles>> {
+        match &self.store {
+            Store::InPlace(p) => Some(&p.tiles),
+            Store::Memory(_) => None,
+        }
+    }
+
+    /// Why a grid read in place could not read its file (it was cut short or changed since
+    /// it was opened), naming the file; `None` for a grid in memory and while all is well.
+    pub fn fault(&self) -> Option<Error> {
+        let tiles = self.tiles()?;
+        let fault =
+            tiles.fault().or_else(|| tiles.records().faulted().then_some(crate::base::mapped_file::Fault::Cut))?;
+        Some(Error::reading(tiles.records().path(), fault.into_io()))
+    }
+
+    /// Tiles a grid read in place has read from its file so far (0 in memory).
+    pub fn tiles_read(&self) -> usize {
+        self.tiles().map_or(0, |t| t.fills())
+    }
+
+    /// The z value at (u index, v index), without the mean offset (NaN where a grid read
+    /// in place cannot read it).
     #[inline]
     pub fn at(&self, iu: usize, iv: usize) -> f32 {
-        self.z[iv * self.nu + iu]
+        match &self.store {
+            Store::Memory(z) => z[iv * self.nu + iu],
+            Store::InPlace(_) => {
+                assert!(iu < self.nu && iv < self.nv, "value ({iu}, {iv}) of {} x {}", self.nu, self.nv);
+                let (cu, cv) = (iu.min(self.nu - 2), iv.min(self.nv - 2));
+                let c = self.corners(cu, cv).unwrap_or([f32::NAN; 4]);
+                c[usize::from(iu > cu) + 2 * usize::from(iv > cv)]
+            }
+        }
+    }
+
+    /// The values when they are held in memory (long section after long section,
+    /// `iv * nu + iu`); `None` for a grid read in place.
+    pub fn in_memory(&self) -> Option<&[f32]> {
+        match &self.store {
+            Store::Memory(z) => Some(z),
+            Store::InPlace(_) => None,
+        }
     }
 
     /// The values of long section `iv`, one per cross section.
     pub fn long_section(&self, iv: usize) -> &[f32] {
-        &self.z[iv * self.nu..(iv + 1) * self.nu]
+        &self.values()[iv * self.nu..(iv + 1) * self.nu]
     }
 
     /// The values of cross section `iu`, one per long section, right to left.
     pub fn cross_section(&self, iu: usize) -> impl ExactSizeIterator<Item = f32> + '_ {
         assert!(iu < self.nu, "cross section {iu} of {}", self.nu);
-        self.z.iter().skip(iu).step_by(self.nu).copied()
+        let mut row = vec![0.0; self.nv];
+        let read = self.rows(iu..iu + 1, |_, values| {
+            row.copy_from_slice(values);
+            Ok::<(), Error>(())
+        });
+        if read.is_err() {
+            row.fill(f32::NAN);
+        }
+        row.into_iter()
     }
 
-    /// Every value, long section after long section (`iv * nu + iu`).
+    /// Every value, long section after long section (`iv * nu + iu`). A grid read in
+    /// place is read whole into memory the first time (NaN where it cannot be read):
+    /// prefer [`Grid::rows`] for it.
     pub fn values(&self) -> &[f32] {
-        &self.z
+        match &self.store {
+            Store::Memory(z) => z,
+            Store::InPlace(p) => p.whole.get_or_init(|| {
+                let mut values = GridValues::new(self.nv, self.nu);
+                let read = self.rows(0..self.nu, |_, row| {
+                    values.push(row.iter().copied());
+                    Ok::<(), Error>(())
+                });
+                let (mut z, _) = values.finish();
+                if read.is_err() {
+                    z.fill(f32::NAN);
+                }
+                z
+            }),
+        }
+    }
+
+    /// A copy of every value, long section after long section (`iv * nu + iu`); a grid
+    /// read in place is read whole for it (NaN where it cannot be read).
+    pub(crate) fn copied_values(&self) -> Vec<f32> {
+        match &self.store {
+            Store::Memory(z) => crate::base::memory::large_copy(z),
+            Store::InPlace(_) => self.values().to_vec(),
+        }
+    }
+
+    /// Calls `f` with each cross section of `range` in turn (its index and its values,
+    /// right to left), without the mean offset: from memory, or read from the file of a
+    /// grid in place one record after another (the pages read handed back, so that a grid
+    /// larger than memory streams through). Stops at the first error: `f`'s, or the one
+    /// naming the file of a grid in place that could not be read (what was handed to `f`
+    /// since the last check may be wrong then: the file is checked every 4096 records).
+    pub fn rows<E: From<Error>>(
+        &self,
+        range: Range<usize>,
+        mut f: impl FnMut(usize, &[f32]) -> std::result::Result<(), E>,
+    ) -> std::result::Result<(), E> {
+        let range = range.start.min(self.nu)..range.end.min(self.nu);
+        match &self.store {
+            Store::Memory(z) => {
+                let mut row = vec![0.0f32; self.nv];
+                for iu in range {
+                    for (value, &z) in row.iter_mut().zip(z.iter().skip(iu).step_by(self.nu)) {
+                        *value = z;
+                    }
+                    f(iu, &row)?;
+                }
+                Ok(())
+            }
+            Store::InPlace(p) => {
+                let records = p.tiles.records();
+                const BATCH: usize = 4096;
+                let mut walker = RowWalker::new(records, p.tiles.ops());
+                let mut start = range.start;
+                while start < range.end {
+                    let end = (start + BATCH).min(range.end);
+                    for iu in start..end {
+                        f(iu, walker.row(iu))?;
+                    }
+                    records.check().map_err(|fault| Error::reading(records.path(), fault.into_io()))?;
+                    records.release(start, end);
+                    start = end;
+                }
+                Ok(())
+            }
+        }
     }
 
     /// Index of the v interval for position `v` (0 to `nv - 2`), found as the reference
@@ -219,13 +409,22 @@ impl Grid {
         };
     }
 
+    /// Adds an operation on every value to a grid read in place: its values are read
+    /// anew through it from now on.
+    fn push_op(&mut self, op: ValueOp) {
+        if let Store::InPlace(p) = &mut self.store {
+            *p = InPlace::new(p.tiles.with_op(op));
+        }
+    }
+
     /// Folds the mean offset into the stored values (as the reference does when it
     /// prepares the data again).
     pub(crate) fn fold_mean(&mut self) {
         if self.mean != 0.0 {
             let add = self.mean as f32;
-            for z in self.z.iter_mut().filter(|z| !z.is_nan()) {
-                *z += add;
+            match &mut self.store {
+                Store::Memory(z) => z.iter_mut().filter(|z| !z.is_nan()).for_each(|z| *z += add),
+                Store::InPlace(_) => self.push_op(ValueOp::Add(add)),
             }
             self.mean = 0.0;
         }
@@ -234,25 +433,34 @@ impl Grid {
     /// Multiplies every value (and the mean offset) by `factor`.
     pub(crate) fn scale(&mut self, factor: f64) {
         let f = factor as f32;
-        for z in self.z.iter_mut() {
-            *z *= f;
+        match &mut self.store {
+            Store::Memory(z) => z.iter_mut().for_each(|z| *z *= f),
+            Store::InPlace(_) => self.push_op(ValueOp::Scale(f)),
         }
         self.mean *= factor;
     }
 
-    /// Replaces NaNs at the borders of every cross section; returns how many were found.
+    /// Replaces NaNs at the borders of every cross section; returns how many were found
+    /// (`None` for a grid read in place, whose values are handled where they are read).
     ///
     /// Scanning from the right border leftwards, a NaN takes its right neighbour's
     /// value (or `offset` for [`NanMode::SetZero`]); the first value copied in a
     /// pass gets `offset` added. Then the same from the left border rightwards.
-    pub(crate) fn fill_nans(&mut self, mode: NanMode, offset: f64) -> usize {
+    pub(crate) fn fill_nans(&mut self, mode: NanMode, offset: f64) -> Option<usize> {
         let (nu, nv) = (self.nu, self.nv);
+        let z = match &mut self.store {
+            Store::Memory(z) => z,
+            Store::InPlace(_) => {
+                self.push_op(ValueOp::Fill(mode, offset as f32));
+                return None;
+            }
+        };
         if nu == 0 || nv == 0 {
-            return 0;
+            return Some(0);
         }
         // Which cross sections hold a NaN, read long section by long section in storage order.
         let mut with_nan = vec![false; nu];
-        for long in self.z.chunks_exact(nu) {
+        for long in z.chunks_exact(nu) {
             for (flag, z) in with_nan.iter_mut().zip(long) {
                 *flag |= z.is_nan();
             }
@@ -266,56 +474,16 @@ impl Grid {
             if iu > 0 && !with_nan[iu - 1] {
                 offset_applied = false;
             }
-            for (value, z) in row.iter_mut().zip(self.z.iter().skip(iu).step_by(nu)) {
+            for (value, z) in row.iter_mut().zip(z.iter().skip(iu).step_by(nu)) {
                 *value = *z;
             }
             total += fill_row_nans(&mut row, mode, offset as f32, &mut offset_applied);
-            for (z, value) in self.z.iter_mut().skip(iu).step_by(nu).zip(&row) {
+            for (z, value) in z.iter_mut().skip(iu).step_by(nu).zip(&row) {
                 *z = *value;
             }
         }
-        total
+        Some(total)
     }
-}
-
-/// [`Grid::fill_nans`] on one cross section; returns how many NaNs it found.
-fn fill_row_nans(row: &mut [f32], mode: NanMode, off: f32, offset_applied: &mut bool) -> usize {
-    let nv = row.len();
-    let mut found = 0;
-    for v in 1..nv {
-        if row[v].is_nan() {
-            found += 1;
-            match mode {
-                NanMode::SetZero => row[v] = off,
-                NanMode::KeepLast => {
-                    row[v] = row[v - 1];
-                    if !row[v].is_nan() && !*offset_applied {
-                        row[v] += off;
-                        *offset_applied = true;
-                    }
-                }
-                NanMode::Keep => {}
-            }
-        }
-    }
-    *offset_applied = false;
-    for v in (1..nv).rev() {
-        if row[v - 1].is_nan() && !row[v].is_nan() {
-            found += 1;
-            match mode {
-                NanMode::SetZero => row[v - 1] = off,
-                NanMode::KeepLast => {
-                    row[v - 1] = row[v];
-                    if !*offset_applied {
-                        row[v - 1] += off;
-                        *offset_applied = true;
-                    }
-                }
-                NanMode::Keep => {}
-            }
-        }
-    }
-    found
 }
 
 /// The values of a grid as a file gives them, cross section by cross section, stored
@@ -377,19 +545,41 @@ impl GridValues {
 
 /// What the elevation lookup needs to start fetching grid memory before the exact
 /// cell is known: reciprocals of the increments (a multiplication is quicker than
-/// the division the exact index takes; the estimate only aims a prefetch).
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
+/// the division the exact index takes; the estimate only aims a prefetch), and where the
+/// values lie.
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct PrefetchHint {
     inv_u_inc: f64,
     inv_v_inc: f64,
+    /// The first value in memory (for a grid read in place, or an uneven one, a value
+    /// of this program's own with both reciprocals 0: the prefetch then asks for memory
+    /// at hand, never for an address nothing maps, whose translation alone costs).
+    base: *const f32,
+}
+
+// SAFETY: the pointer is only used to aim prefetches, never read.
+unsafe impl Send for PrefetchHint {}
+// SAFETY: as for `Send`.
+unsafe impl Sync for PrefetchHint {}
+
+/// What a hint that aims nowhere asks the processor to load.
+static AT_HAND: [f32; 16] = [0.0; 16];
+
+impl Default for PrefetchHint {
+    fn default() -> Self {
+        PrefetchHint { inv_u_inc: 0.0, inv_v_inc: 0.0, base: AT_HAND.as_ptr() }
+    }
 }
 
 impl PrefetchHint {
-    /// The hint for a grid whose cross sections are `u_inc` apart (none for an uneven grid).
+    /// The hint for a grid whose cross sections are `u_inc` apart (none for an uneven grid
+    /// or one read in place).
     pub(crate) fn new(u_inc: f64, g: &Grid) -> Self {
-        match g.layout {
-            VLayout::Indexed => PrefetchHint { inv_u_inc: 1.0 / u_inc, inv_v_inc: 1.0 / g.v_inc },
-            VLayout::Explicit => PrefetchHint::default(),
+        match (g.layout, g.in_memory()) {
+            (VLayout::Indexed, Some(z)) => {
+                PrefetchHint { inv_u_inc: 1.0 / u_inc, inv_v_inc: 1.0 / g.v_inc, base: z.as_ptr() }
+            }
+            _ => PrefetchHint::default(),
         }
     }
 
@@ -403,8 +593,10 @@ impl PrefetchHint {
         // The upper half of a cell is where twice the estimate truncates to an odd number.
         let upper = crate::base::memory::rough_index(2.0 * ev) & 1 == 1;
         let (iu, iv) = (crate::base::memory::rough_index(eu), crate::base::memory::rough_index(ev));
-        g.prefetch_cell(iu, iv);
-        g.prefetch_path(iu, iv, upper);
+        let p = self.base.wrapping_add(iv.wrapping_mul(g.nu).wrapping_add(iu));
+        crate::base::memory::prefetch(p);
+        crate::base::memory::prefetch(p.wrapping_add(g.nu));
+        prefetch_path_from(p, g.nu, upper);
     }
 }
 
@@ -423,7 +615,7 @@ mod tests {
         Grid {
             nu,
             nv,
-            z,
+            store: Store::Memory(z),
             mean: 0.0,
             v: (0..nv).map(|i| i as f64).collect(),
             v_first: 0.0,
@@ -439,7 +631,7 @@ mod tests {
     fn nan_borders_take_the_last_value() {
         let n = f32::NAN;
         let mut g = grid(vec![n, n, 1.0, 2.0, n], 5);
-        assert_eq!(g.fill_nans(NanMode::KeepLast, 0.0), 4, "both passes count");
+        assert_eq!(g.fill_nans(NanMode::KeepLast, 0.0), Some(4), "both passes count");
         assert_eq!(g.cross_section(0).collect::<Vec<_>>(), vec![1.0, 1.0, 1.0, 2.0, 2.0]);
         let mut g = grid(vec![n, 1.0, n], 3);
         g.fill_nans(NanMode::SetZero, 5.0);
@@ -466,7 +658,7 @@ mod tests {
             for row in expected.chunks_exact_mut(4) {
                 count += fill_row_nans(row, mode, 0.5, &mut mark);
             }
-            assert_eq!(found, count, "{mode:?}");
+            assert_eq!(found, Some(count), "{mode:?}");
             let got: Vec<f32> = (0..g.nu).flat_map(|iu| g.cross_section(iu).collect::<Vec<_>>()).collect();
             assert_eq!(format!("{got:?}"), format!("{expected:?}"), "{mode:?}");
         }

@@ -13,9 +13,10 @@ pub struct Statistics {
     pub z_mean_start: f64,
     /// Mean elevation of the last cross section.
     pub z_mean_end: f64,
-    /// Lowest elevation of the grid (no lower than the start mean's own value bounds it).
+    /// Lowest elevation of the grid (no lower than the start mean's own value bounds it);
+    /// NaN for a grid read in place (finding it would read the whole grid).
     pub z_min: f64,
-    /// Highest elevation of the grid.
+    /// Highest elevation of the grid; NaN for a grid read in place.
     pub z_max: f64,
     /// u of the first cross section.
     pub u_first: f64,
@@ -63,6 +64,9 @@ pub enum Event {
     },
     /// NaN handling of the grid borders: how many cells were NaN.
     NansHandled(usize),
+    /// NaN handling of the grid borders of a road read in place: it acts where values are
+    /// read (the cells are not counted, which would read the whole grid).
+    NansHandledWhereRead,
     /// The road was moved: the point moved, by how much, and the rotation.
     Relocated {
         /// Rotation center (x, y).
@@ -108,9 +112,13 @@ impl Statistics {
         };
         let z_mean_start = mean_of(&mut g.cross_section(0));
         let z_mean_end = mean_of(&mut g.cross_section(g.nu - 1));
-        let (lo, hi) = finite_range(g.values());
-        let z_min = z_mean_start.min(f64::from(lo));
-        let z_max = z_mean_start.max(f64::from(hi));
+        let (z_min, z_max) = match g.in_memory() {
+            Some(values) => {
+                let (lo, hi) = finite_range(values);
+                (z_mean_start.min(f64::from(lo)), z_mean_start.max(f64::from(hi)))
+            }
+            None => (f64::NAN, f64::NAN),
+        };
         let n = l.n;
         let heading = |a: usize, b: usize| (l.y[b] - l.y[a]).atan2(l.x[b] - l.x[a]);
         let (mut right, mut left) = (0.0f64, 0.0f64);

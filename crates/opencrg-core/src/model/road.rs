@@ -42,8 +42,86 @@ pub struct LoadOptions {
     pub compat: Compat,
     /// Whether every preparation of the road (after loading, after modifiers that change
     /// its data) reports its statistics as an [`Event::Prepared`](crate::report::Event):
-    /// a scan of the whole grid, so off unless someone reads them.
+    /// a scan of the whole grid, so off unless someone reads them (a road read in place
+    /// reports them without the scan: its lowest and highest elevation are NaN).
     pub report_statistics: bool,
+    /// Whether a binary road's grid is read in place from its file (see
+    /// [`Grid::is_in_place`](crate::grid::Grid::is_in_place)) or into memory.
+    pub in_place: ReadInPlace,
+    /// The most memory a road read in place keeps its decoded tiles in, in bytes; `None`:
+    /// as the environment variable `OPENCRG_IN_PLACE_CACHE` says (a size such as `256M`),
+    /// else [`DEFAULT_TILE_CACHE`].
+    pub tile_cache: Option<u64>,
+}
+
+/// Binary roads of this many bytes and more are read in place unless told otherwise.
+pub const DEFAULT_IN_PLACE_FROM: u64 = 1 << 30;
+
+/// The memory a road read in place keeps its decoded tiles in unless told otherwise.
+pub const DEFAULT_TILE_CACHE: u64 = 64 << 20;
+
+/// When a binary road (KRBI, KDBI) is read in place: its header and reference line are
+/// read on opening, its grid values where an evaluation reaches them, through the
+/// system's file cache (which every process reading the file shares) into a cache of
+/// decoded tiles of bounded size. Text roads are always read into memory.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub enum ReadInPlace {
+    /// As the environment variable `OPENCRG_IN_PLACE` says (`never`, `always`, or a size
+    /// such as `256M` from which on), else from [`DEFAULT_IN_PLACE_FROM`] on.
+    #[default]
+    Auto,
+    /// Never: the grid is read into memory.
+    Never,
+    /// Every binary road.
+    Always,
+    /// Binary roads of this many bytes and more.
+    From(u64),
+}
+
+impl ReadInPlace {
+    /// The policy a text says: `never`, `always`, `auto`, or a size (`256M`, `2GiB`).
+    pub fn parse(text: &str) -> std::result::Result<ReadInPlace, String> {
+        match text.trim().to_ascii_lowercase().as_str() {
+            "never" => Ok(ReadInPlace::Never),
+            "always" => Ok(ReadInPlace::Always),
+            "auto" => Ok(ReadInPlace::Auto),
+            _ => crate::base::budget::parse_bytes(text)
+                .map(ReadInPlace::From)
+                .map_err(|_| format!("'{text}': expected never, always, auto or a size such as 256M")),
+        }
+    }
+
+    /// Whether a binary file of `bytes` is read in place; `Auto` reads `OPENCRG_IN_PLACE`.
+    pub(crate) fn applies(self, bytes: u64) -> crate::base::error::Result<bool> {
+        let policy = match self {
+            ReadInPlace::Auto => match std::env::var("OPENCRG_IN_PLACE") {
+                Ok(text) if !text.trim().is_empty() => ReadInPlace::parse(&text)
+                    .map_err(|e| crate::base::error::Error::out_of_range(format!("OPENCRG_IN_PLACE={e}")))?,
+                _ => ReadInPlace::From(DEFAULT_IN_PLACE_FROM),
+            },
+            other => other,
+        };
+        Ok(match policy {
+            ReadInPlace::Never => false,
+            ReadInPlace::Always => true,
+            ReadInPlace::From(limit) => bytes >= limit,
+            ReadInPlace::Auto => bytes >= DEFAULT_IN_PLACE_FROM,
+        })
+    }
+}
+
+impl LoadOptions {
+    /// The tile cache's size in bytes: the option, else `OPENCRG_IN_PLACE_CACHE`, else the default.
+    pub(crate) fn tile_cache_bytes(&self) -> crate::base::error::Result<u64> {
+        if let Some(bytes) = self.tile_cache {
+            return Ok(bytes);
+        }
+        match std::env::var("OPENCRG_IN_PLACE_CACHE") {
+            Ok(text) if !text.trim().is_empty() => crate::base::budget::parse_bytes(&text)
+                .map_err(|e| crate::base::error::Error::out_of_range(format!("OPENCRG_IN_PLACE_CACHE={e}"))),
+            _ => Ok(DEFAULT_TILE_CACHE),
+        }
+    }
 }
 
 impl From<Compat> for LoadOptions {

@@ -82,7 +82,7 @@ fn is_end_position(key: &str) -> bool {
 impl Draft {
     /// The road's data as arrays (the road is not changed).
     pub fn of(road: &Road) -> Draft {
-        Draft { z: road.grid.z.clone(), ..Draft::line_of(road) }
+        Draft { z: road.grid.copied_values(), ..Draft::line_of(road) }
     }
 
     /// The road's data as arrays but its grid (`z` empty), for operations that make a
@@ -123,7 +123,7 @@ impl Draft {
             origin: road.origin,
             origin_start: (l.x_first, l.y_first),
             moved: false,
-            load: LoadOptions { compat: road.compat, report_statistics: false },
+            load: LoadOptions { compat: road.compat, ..LoadOptions::default() },
         }
     }
 

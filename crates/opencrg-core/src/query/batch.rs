@@ -55,10 +55,12 @@ impl ContactPoint {
         let (u, v, z) = (&u[..n], &v[..n], &mut z[..n]);
         // The cells of the points from `start` on, loading started; a point outside the
         // lean path's case gets `None` and takes the general path when its turn comes.
+        // (A grid read in place is read from its tiles: no prefetch aims into it.)
+        let in_place = self.road().grid().is_in_place();
         let locate = |start: usize, cells: &mut [Option<PlainCell>; BLOCK]| {
             for ((cell, &u), &v) in cells.iter_mut().zip(&u[start..]).zip(&v[start..]) {
                 *cell = self.plain_cell(u, v);
-                if let Some(cell) = cell {
+                if let (Some(cell), false) = (cell, in_place) {
                     self.plain_prefetch_far(cell);
                 }
             }
@@ -76,7 +78,7 @@ impl ContactPoint {
             for ((out, cell), i) in z[start..end].iter_mut().zip(&ring[b % RING]).zip(start..) {
                 let value = match cell {
                     Some(cell) => Ok(self.plain_elevation(cell)),
-                    None => self.uv_to_z_general(u[i], v[i]),
+                    None => self.uv_to_z_other(u[i], v[i]),
                 };
                 [*out] = settle(value.map(|z| [z]), &mut ok);
             }

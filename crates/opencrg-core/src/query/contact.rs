@@ -4,7 +4,7 @@ use crate::base::error::{Error, Result};
 use crate::base::settings::{opt, Settings};
 use crate::model::road::Road;
 use crate::query::eval::{self, EvalOptions};
-use crate::query::plain::{CellTerms, PlainCell, PlainGrid};
+use crate::query::plain::{CellTerms, PlainCell, PlainGrid, Window, WINDOWS};
 use crate::query::search::{self, History, DEFAULT_HISTORY};
 use std::sync::Arc;
 
@@ -28,19 +28,38 @@ pub struct SearchHistory {
     pub entries: Vec<(f64, f64, usize)>,
 }
 
+/// The tiles of a road read in place that a contact point keeps pinned, window `k` of its
+/// [`PlainGrid`] the tile `windows[k]`, and when each was last entered (a count of window
+/// moves). A copy pins nothing.
+#[derive(Debug, Default)]
+struct Windows {
+    windows: Vec<Window>,
+    used: Vec<u64>,
+    clock: u64,
+}
+
+impl Clone for Windows {
+    fn clone(&self) -> Self {
+        Windows::default()
+    }
+}
+
 /// Evaluates a road with its own options and x/y search history.
 ///
 /// Contact points are cheap; give each thread (or each wheel) its own. The road is
 /// shared and never changed by evaluation.
-#[derive(Debug, Clone)]
+#[derive(Debug)]
 pub struct ContactPoint {
     road: Arc<Road>,
     options: Settings,
     eval: EvalOptions,
-    /// The common case of the elevation lookup, from `road` and `eval`.
+    /// The common case of the elevation lookup, from `road` and `eval` (for a road read in
+    /// place, with the window of `windows`).
     plain: PlainGrid,
+    /// The tiles pinned for `plain`'s window, for a road read in place.
+    windows: Windows,
     /// The terms of the cell the last lookup of the common case read (through
-    /// [`ContactPoint::uv_to_z_plain`]), from `road`.
+    /// [`ContactPoint::uv_to_z_plain`] or [`ContactPoint::z_of_found`]), from `road`.
     last: CellTerms,
     history: History,
 }
@@ -66,6 +85,23 @@ fn finite(a: f64, b: f64) -> Result<()> {
     }
 }
 
+impl Clone for ContactPoint {
+    /// A contact point with the same road, options and history (and no tile pinned).
+    fn clone(&self) -> Self {
+        let mut plain = self.plain;
+        plain.clear_windows();
+        ContactPoint {
+            road: self.road.clone(),
+            options: self.options.clone(),
+            eval: self.eval,
+            plain,
+            windows: Windows::default(),
+            last: self.last,
+            history: self.history.clone(),
+        }
+    }
+}
+
 impl ContactPoint {
     /// A contact point on `road`, starting with the road's default options.
     pub fn new(road: Arc<Road>) -> Self {
@@ -73,7 +109,7 @@ impl ContactPoint {
         let history = History::new(DEFAULT_HISTORY, DEFAULT_CLOSE * DEFAULT_CLOSE, DEFAULT_FAR * DEFAULT_FAR);
         let eval = EvalOptions::from(&options);
         let plain = PlainGrid::new(&road, &eval);
-        ContactPoint { road, options, eval, plain, last: CellTerms::NONE, history }
+        ContactPoint { road, options, eval, plain, windows: Windows::default(), last: CellTerms::NONE, history }
     }
 
     /// The road evaluated.
@@ -85,6 +121,7 @@ impl ContactPoint {
     /// applied); options and history are kept.
     pub fn set_road(&mut self, road: Arc<Road>) {
         self.plain = PlainGrid::new(&road, &self.eval);
+        self.windows = Windows::default();
         self.last = CellTerms::NONE;
         self.road = road;
     }
@@ -100,6 +137,7 @@ impl ContactPoint {
         let r = f(&mut self.options);
         self.eval = EvalOptions::from(&self.options);
         self.plain = PlainGrid::new(&self.road, &self.eval);
+        self.windows = Windows::default();
         self.last = CellTerms::NONE;
         r
     }
@@ -213,23 +251,53 @@ impl ContactPoint {
         // than the general path's own check for it), the general one for the rest.
         match self.plain.cell(u, v) {
             Some(cell) => Ok(self.plain_elevation(&cell)),
-            None => self.uv_to_z_general(u, v),
+            None => self.uv_to_z_other(u, v),
         }
     }
 
-    /// The elevation at a cell of the common case, read from the road.
+    /// The elevation at a cell of the common case, read from the road's grid in memory or
+    /// the window's pinned tile.
     #[inline(always)]
     pub(crate) fn plain_elevation(&self, cell: &PlainCell) -> f64 {
         // SAFETY: `plain` was made from `road`, which the contact point holds (the two
-        // change together), and the contact point's cells come from `plain`.
+        // change together), its window's tile is pinned by `windows`, and the contact
+        // point's cells come from `plain`.
         unsafe { self.plain.elevation(&self.plain.terms(cell), cell) }
+    }
+
+    /// [`ContactPoint::uv_to_z`] outside the common case's window: a cell of a grid read in
+    /// place (its tile read where it is), else the path that handles every case.
+    #[inline(never)]
+    pub(crate) fn uv_to_z_other(&self, u: f64, v: f64) -> Result<f64> {
+        if let Some(cell) = self.plain.road_cell(u, v).filter(|_| self.plain.in_place()) {
+            // SAFETY: `plain` was made from `road`, which the contact point holds, and
+            // `cell` from `plain`.
+            if let Some(terms) = unsafe { self.plain.tile_terms(&cell) } {
+                // SAFETY: as above.
+                return Ok(unsafe { self.plain.elevation(&terms, &cell) });
+            }
+        }
+        self.uv_to_z_general(u, v)
     }
 
     /// [`ContactPoint::uv_to_z`] through the path that handles every case.
     #[inline]
     pub(crate) fn uv_to_z_general(&self, u: f64, v: f64) -> Result<f64> {
         finite(u, v)?;
-        elevation(eval::uv_to_z(&self.road, &self.eval, u, v))
+        self.read(elevation(eval::uv_to_z(&self.road, &self.eval, u, v)))
+    }
+
+    /// An elevation answered NaN by a road read in place that could not read its file
+    /// becomes the error naming the file.
+    #[inline(always)]
+    fn read(&self, z: Result<f64>) -> Result<f64> {
+        match z {
+            Ok(z) if z.is_nan() => match self.road.grid.fault() {
+                Some(e) => Err(e),
+                None => Ok(z),
+            },
+            other => other,
+        }
     }
 
     /// Asks the processor to start loading a cell of the common case into the
@@ -256,17 +324,75 @@ impl ContactPoint {
     #[inline(always)]
     pub fn uv_to_z_plain(&mut self, u: f64, v: f64) -> Option<f64> {
         let cell = self.plain.cell(u, v)?;
-        if self.last.of(&cell) {
+        Some(self.plain_on(&cell))
+    }
+
+    /// The elevation at `cell` of the common case (inside the window), keeping its terms.
+    #[inline(always)]
+    fn plain_on(&mut self, cell: &PlainCell) -> f64 {
+        if self.last.of(cell) {
             // SAFETY: as in `plain_elevation`.
-            return Some(unsafe { self.plain.elevation(&self.last, &cell) });
+            return unsafe { self.plain.elevation(&self.last, cell) };
         }
-        self.plain.prefetch_path(&cell);
+        self.plain.prefetch_path(cell);
         // SAFETY: as in `plain_elevation`.
-        let terms = unsafe { self.plain.terms(&cell) };
+        let terms = unsafe { self.plain.terms(cell) };
         // SAFETY: as in `plain_elevation`.
-        let z = unsafe { self.plain.elevation(&terms, &cell) };
+        let z = unsafe { self.plain.elevation(&terms, cell) };
         self.last = terms;
-        Some(z)
+        z
+    }
+
+    /// [`ContactPoint::uv_to_z_plain`] for a road read in place whose point lies outside
+    /// the windows: a window moves to the tile of the point's cell (a present tile, pinned
+    /// now) and the common case answers. `None` for every other case, also where the tile must first be read from
+    /// the file ([`ContactPoint::uv_to_z`] and [`ContactPoint::z_of_found`] do that).
+    /// Nothing in it can panic or take a lock; not part of the supported Rust API.
+    #[doc(hidden)]
+    #[inline(never)]
+    pub fn uv_to_z_placed(&mut self, u: f64, v: f64) -> Option<f64> {
+        let (iu, iv) = self.plain.road_cell(u, v)?.indices();
+        self.enter_window(iu, iv)?;
+        self.uv_to_z_plain(u, v)
+    }
+
+    /// Makes the tile of the cell (`iu`, `iv`) a window: a present tile pinned now, in the
+    /// place of the window entered longest ago (unpinned); `None` where the tile is not
+    /// present.
+    fn enter_window(&mut self, iu: usize, iv: usize) -> Option<()> {
+        let Windows { windows, used, clock } = &mut self.windows;
+        *clock += 1;
+        let window = self.plain.window(self.road.grid.tiles()?.pin(iu, iv)?);
+        let k = if windows.len() < WINDOWS {
+            windows.push(window);
+            used.push(*clock);
+            windows.len() - 1
+        } else {
+            let oldest = (0..WINDOWS).min_by_key(|&k| used[k]).unwrap_or(0);
+            windows[oldest] = window;
+            used[oldest] = *clock;
+            oldest
+        };
+        self.plain.set_window(k, &windows[k]);
+        Some(())
+    }
+
+    /// [`ContactPoint::uv_to_z_placed`], reading the cell's tile from the file where it
+    /// is not present; `None` where it does not apply or the file cannot be read.
+    fn uv_to_z_placed_read(&mut self, u: f64, v: f64) -> Option<f64> {
+        if let Some(z) = self.uv_to_z_placed(u, v) {
+            return Some(z);
+        }
+        let cell = self.plain.road_cell(u, v)?;
+        // SAFETY: `plain` was made from `road`, which the contact point holds, and `cell`
+        // from `plain`.
+        let terms = unsafe { self.plain.tile_terms(&cell) }?;
+        if let Some(z) = self.uv_to_z_placed(u, v) {
+            return Some(z);
+        }
+        // (The pool had no slot to pin: the values read are answered from.)
+        // SAFETY: as above.
+        Some(unsafe { self.plain.elevation(&terms, &cell) })
     }
 
     /// The C library's call-free path of the x/y calls: (u, v) of (x, y) when the lean
@@ -317,7 +443,7 @@ impl ContactPoint {
     pub fn uv_to_normal(&self, u: f64, v: f64) -> Result<(f64, [f64; 3])> {
         finite(u, v)?;
         match crate::query::normal::uv_normal(&self.road, &self.eval, u, v) {
-            Some(answer) => Ok(answer),
+            Some((z, normal)) => Ok((self.read(Ok(z))?, normal)),
             None => Err(Error::OutOfRange(std::borrow::Cow::Borrowed(
                 "evaluation refused: outside the road with border mode none",
             ))),
@@ -345,7 +471,17 @@ impl ContactPoint {
     pub fn z_of_found(&mut self, u: f64, v: f64) -> Result<f64> {
         match self.uv_to_z_plain(u, v) {
             Some(z) => Ok(z),
-            None => elevation(eval::uv_to_z(&self.road, &self.eval, u, v)),
+            None => self.z_of_found_other(u, v),
+        }
+    }
+
+    /// [`ContactPoint::z_of_found`] where the common case of a grid in memory does not
+    /// apply.
+    #[inline(never)]
+    fn z_of_found_other(&mut self, u: f64, v: f64) -> Result<f64> {
+        match self.uv_to_z_placed_read(u, v) {
+            Some(z) => Ok(z),
+            None => self.read(elevation(eval::uv_to_z(&self.road, &self.eval, u, v))),
         }
     }
 

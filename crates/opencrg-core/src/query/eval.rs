@@ -295,9 +295,7 @@ fn surface<const FU_IN_CELL: bool>(
     let mut z = 0.0;
     if with_values {
         // The four corners: (iu, iv), (iu + 1, iv), and the same on the next long section.
-        let (base, next) = (iv.wrapping_mul(g.nu).wrapping_add(iu), g.nu);
-        let cell = g.z.get(base..)?.get(..next.wrapping_add(2))?;
-        let (&[c00, c10], &[c01, c11]) = (cell.first_chunk::<2>()?, cell.last_chunk::<2>()?);
+        let [c00, c10, c01, c11] = g.corners(iu, iv)?;
         z = bilinear(&corner_terms(c00, c10, c01, c11), fu, fv);
         z += g.mean;
     }

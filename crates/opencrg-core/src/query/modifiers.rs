@@ -71,8 +71,11 @@ impl Road {
                 2 => (NanMode::KeepLast, mods.get_double(m::GRID_NAN_OFFSET).unwrap_or(0.0)),
                 _ => (NanMode::Keep, 0.0),
             };
-            let found = self.grid.fill_nans(mode, offset);
-            self.note(crate::model::report::Event::NansHandled(found));
+            let event = match self.grid.fill_nans(mode, offset) {
+                Some(found) => crate::model::report::Event::NansHandled(found),
+                None => crate::model::report::Event::NansHandledWhereRead,
+            };
+            self.note(event);
         }
         if prepare {
             self.prepare();

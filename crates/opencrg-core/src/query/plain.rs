@@ -7,8 +7,9 @@
 //! again and again. The answers are those of the general path, bit for bit: the same
 //! operations (those of `interpolation`) on the same values.
 
-use crate::model::grid::{prefetch_cell_far_from, prefetch_path_from, VLayout};
+use crate::model::grid::{prefetch_cell_far_from, prefetch_path_from, Store, VLayout};
 use crate::model::road::Road;
+use crate::model::tiles::{Pin, Tiles, TILE_STRIDE, TILE_U, TILE_V};
 use crate::query::eval::EvalOptions;
 use crate::query::interpolation::{bilinear, corner_terms, lerp_at, lerp_terms};
 
@@ -34,18 +35,26 @@ enum LineTerm {
 /// unchecked). Where the common case never applies (an uneven grid, a smoothing zone, a
 /// road whose arrays disagree with its sizes) its bounds are NaN: every comparison with
 /// them fails, so no point lies inside.
+///
+/// The common case applies inside its windows, tried in turn: for a grid in memory one, the
+/// road's range and its values; for a grid read in place up to [`WINDOWS`], each the cells
+/// of one pinned tile (see [`PlainGrid::set_window`]), whose values its base and `nu` then
+/// address as they address a grid in memory. A point outside them takes another path,
+/// which moves a window. The unused windows' bounds are NaN.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PlainGrid {
+    windows: [Bounds; WINDOWS],
+    /// The road's range of the common case: from the first cross section to the largest u
+    /// whose grid fraction lies below the last cross section's, and the same across.
+    road: [f64; 4],
     u_first: f64,
-    /// The largest u whose grid fraction lies below the last cross section's.
-    u_inner: f64,
     u_inc: f64,
     v_first: f64,
-    /// The largest v whose grid fraction lies below the last long section's.
-    v_inner: f64,
     v_inc: f64,
-    /// The grid's values, long section by long section, `nu` apart.
-    z: *const f32,
+    /// The last cross and long section's grid fractions (`n - 1` as doubles).
+    last: (f64, f64),
+    /// The tiles of a grid read in place (null for a grid in memory).
+    tiles: *const Tiles,
     nu: usize,
     mean: f64,
     line_z: LineTerm,
@@ -74,16 +83,76 @@ fn inner_bound(first: f64, last: f64, inc: f64, limit: f64) -> f64 {
     f64::NAN
 }
 
+/// How many windows the common case tries: a contact point shared by the four wheels of
+/// a car reads four tiles at a time.
+pub(crate) const WINDOWS: usize = 4;
+
+/// Where the common case applies in one window, and where the window's values lie.
+#[derive(Debug, Clone, Copy)]
+struct Bounds {
+    /// u from, u to, v from, v to.
+    range: [f64; 4],
+    /// The values, long section by long section, `nu` apart: the grid in memory, or a tile
+    /// rebased so that the first corner of cell (iu, iv) is at `iv * nu + iu` for every
+    /// cell of the window (null for a window not set).
+    z: *const f32,
+}
+
+impl Bounds {
+    const NONE: Bounds = Bounds { range: [f64::NAN; 4], z: std::ptr::null() };
+
+    /// Whether (u, v) lies in the window (false for NaN).
+    #[inline(always)]
+    fn holds(&self, u: f64, v: f64) -> bool {
+        let [u_lo, u_hi, v_lo, v_hi] = self.range;
+        u >= u_lo && u <= u_hi && v >= v_lo && v <= v_hi
+    }
+}
+
+/// The smallest `x` for which `(x - first) / inc` is at least `limit`, found within a few
+/// steps of `first + limit * inc`; NaN where it is not (then no window applies).
+fn at_least(first: f64, inc: f64, limit: f64) -> f64 {
+    let frac = |x: f64| (x - first) / inc;
+    let mut x = first + limit * inc;
+    if frac(x) >= limit {
+        for _ in 0..64 {
+            let down = x.next_down();
+            if frac(down) < limit {
+                return x;
+            }
+            x = down;
+        }
+    } else {
+        for _ in 0..64 {
+            x = x.next_up();
+            if frac(x) >= limit {
+                return x;
+            }
+        }
+    }
+    f64::NAN
+}
+
+/// The largest `x` for which `(x - first) / inc` lies below `limit` (see [`at_least`]).
+fn below(first: f64, inc: f64, limit: f64) -> f64 {
+    at_least(first, inc, limit).next_down()
+}
+
 /// Whether the road's arrays have the sizes the unchecked reads of [`PlainGrid`] rely
-/// on: at least two samples along and across, `nu * nv` grid values, one channel value
-/// per reference line sample, and the index bounds the cell search clamps to.
+/// on: at least two samples along and across, `nu * nv` grid values (or records of `nv`
+/// values), one channel value per reference line sample, and the index bounds the cell
+/// search clamps to.
 fn sizes_agree(road: &Road) -> bool {
     let (l, g) = (&road.line, &road.grid);
     let per_sample = |c: &Option<Vec<f64>>| c.as_ref().is_none_or(|c| c.len() == l.n);
+    let values_agree = match &g.store {
+        Store::Memory(z) => g.nu.checked_mul(g.nv) == Some(z.len()),
+        Store::InPlace(p) => p.tiles.records().nu() == g.nu && p.tiles.records().nv() == g.nv,
+    };
     l.n == g.nu
         && g.nu >= 2
         && g.nv >= 2
-        && g.nu.checked_mul(g.nv) == Some(g.values().len())
+        && values_agree
         && per_sample(&l.z)
         && per_sample(&l.bank)
         && l.last_frac == (l.n - 1) as f64
@@ -91,7 +160,9 @@ fn sizes_agree(road: &Road) -> bool {
 }
 
 impl PlainGrid {
-    /// The common case of `road` evaluated with `options`.
+    /// The common case of `road` evaluated with `options`. For a grid read in place the
+    /// cell's values come from its tiles ([`PlainGrid::tile_terms`]), not from
+    /// [`PlainGrid::terms`].
     pub(crate) fn new(road: &Road, options: &EvalOptions) -> Self {
         let (l, g) = (&road.line, &road.grid);
         // Positive increments make every fraction of a point inside non-negative, which
@@ -106,15 +177,27 @@ impl PlainGrid {
             Some(c) => LineTerm::Channel(c.as_ptr()),
             None => LineTerm::Constant(first),
         };
+        let road = [
+            bound(l.u_first),
+            bound(inner_bound(l.u_first, l.u_last, l.u_inc, l.last_frac)),
+            bound(g.v_first),
+            bound(inner_bound(g.v_first, g.v_last, g.v_inc, g.last_frac)),
+        ];
+        // A grid read in place has no window yet.
+        let mut windows = [Bounds::NONE; WINDOWS];
+        if !g.is_in_place() {
+            windows[0] = Bounds { range: road, z: g.memory_ptr() };
+        }
         PlainGrid {
-            u_first: bound(l.u_first),
-            u_inner: bound(inner_bound(l.u_first, l.u_last, l.u_inc, l.last_frac)),
+            windows,
+            road,
+            u_first: l.u_first,
             u_inc: l.u_inc,
-            v_first: bound(g.v_first),
-            v_inner: bound(inner_bound(g.v_first, g.v_last, g.v_inc, g.last_frac)),
+            v_first: g.v_first,
             v_inc: g.v_inc,
-            z: g.values().as_ptr(),
-            nu: l.n,
+            last: (l.last_frac, g.last_frac),
+            tiles: g.tiles().map_or(std::ptr::null(), std::sync::Arc::as_ptr),
+            nu: if g.is_in_place() { TILE_STRIDE } else { l.n },
             mean: g.mean,
             line_z: term(&l.z, l.z_first),
             bank: if l.has_bank { term(&l.bank, l.bank_first) } else { LineTerm::Absent },
@@ -127,23 +210,50 @@ impl PlainGrid {
     /// for it.
     #[inline(always)]
     pub(crate) fn cell(&self, u: f64, v: f64) -> Option<PlainCell> {
-        if !(u >= self.u_first && u <= self.u_inner && v >= self.v_first && v <= self.v_inner) {
+        let w = &self.windows;
+        let z = if w[0].holds(u, v) {
+            w[0].z
+        } else if w[1].holds(u, v) {
+            w[1].z
+        } else if w[2].holds(u, v) {
+            w[2].z
+        } else if w[3].holds(u, v) {
+            w[3].z
+        } else {
+            return None;
+        };
+        self.cell_inside(u, v, z)
+    }
+
+    /// [`PlainGrid::cell`] within the road's range (also outside the windows; its values
+    /// are not at hand: see [`PlainGrid::tile_terms`]).
+    #[inline]
+    pub(crate) fn road_cell(&self, u: f64, v: f64) -> Option<PlainCell> {
+        let [u_lo, u_hi, v_lo, v_hi] = self.road;
+        if !(u >= u_lo && u <= u_hi && v >= v_lo && v <= v_hi) {
             return None;
         }
+        self.cell_inside(u, v, std::ptr::null())
+    }
+
+    /// The cell of a point inside the road's range of the common case, whose window's
+    /// values are at `z`.
+    #[inline(always)]
+    fn cell_inside(&self, u: f64, v: f64, z: *const f32) -> Option<PlainCell> {
         // Inside, 0 <= fu < nu - 1 and 0 <= fv < nv - 1 (see `inner_bound`): the
         // general path's index is the truncation.
         let fu = (u - self.u_first) / self.u_inc;
         let fv = (v - self.v_first) / self.v_inc;
         // SAFETY: both fractions are finite and far below 2^63 (the bounds above).
         let (iu, iv) = unsafe { (fu.to_int_unchecked::<i64>(), fv.to_int_unchecked::<i64>()) };
-        Some(PlainCell { iu: iu as usize, fu: fu - iu as f64, iv: iv as usize, fv: fv - iv as f64, v })
+        Some(PlainCell { iu: iu as usize, fu: fu - iu as f64, iv: iv as usize, fv: fv - iv as f64, v, z })
     }
 
     /// Where the first corner of `cell` lies in the grid's values. Only computed, never
     /// read.
     #[inline(always)]
     fn corner(&self, cell: &PlainCell) -> *const f32 {
-        self.z.wrapping_add(cell.iv.wrapping_mul(self.nu).wrapping_add(cell.iu))
+        cell.z.wrapping_add(cell.iv.wrapping_mul(self.nu).wrapping_add(cell.iu))
     }
 
     /// Asks the processor to start loading the cell's grid values into the second-level
@@ -160,12 +270,54 @@ impl PlainGrid {
         prefetch_path_from(self.corner(cell), self.nu, cell.fv > 0.5);
     }
 
-    /// The terms of `cell`'s grid values, read from the road.
+    /// Whether the grid is read in place.
+    #[inline(always)]
+    pub(crate) fn in_place(&self) -> bool {
+        !self.tiles.is_null()
+    }
+
+    /// The window onto the pinned tile `pin` of a grid read in place: the common case
+    /// applies to the points whose cells lie in the tile (and in the road's range), found
+    /// exactly as [`PlainGrid::cell`] finds them, and reads their values from the tile.
+    pub(crate) fn window(&self, pin: Pin) -> Window {
+        let (iu0, iv0) = pin.origin();
+        let [u_lo, u_hi, v_lo, v_hi] = self.road;
+        let (first_u, first_v) = (iu0 as f64, iv0 as f64);
+        let bounds = [
+            if iu0 == 0 { u_lo } else { at_least(self.u_first, self.u_inc, first_u).max(u_lo) },
+            below(self.u_first, self.u_inc, (first_u + TILE_U as f64).min(self.last.0)).min(u_hi),
+            if iv0 == 0 { v_lo } else { at_least(self.v_first, self.v_inc, first_v).max(v_lo) },
+            below(self.v_first, self.v_inc, (first_v + TILE_V as f64).min(self.last.1)).min(v_hi),
+        ];
+        let z = pin.values().wrapping_sub(iv0 * TILE_STRIDE + iu0);
+        Window { _pin: pin, bounds, z }
+    }
+
+    /// Makes `window` this grid's window `k` (below [`WINDOWS`]; the caller keeps it as long
+    /// as it is set).
+    #[inline]
+    pub(crate) fn set_window(&mut self, k: usize, window: &Window) {
+        if let Some(w) = self.windows.get_mut(k) {
+            *w = Bounds { range: window.bounds, z: window.z };
+        }
+    }
+
+    /// Removes the windows of a grid read in place (no point takes the common case until
+    /// another is set).
+    pub(crate) fn clear_windows(&mut self) {
+        if self.in_place() {
+            self.windows = [Bounds::NONE; WINDOWS];
+        }
+    }
+
+    /// The terms of `cell`'s grid values, read from the road's grid in memory or from the
+    /// window's tile.
     ///
     /// # Safety
-    /// The road this `PlainGrid` was made from is alive, and `cell` came from
-    /// [`PlainGrid::cell`] of this `PlainGrid`: then [`sizes_agree`] held, and
-    /// `cell.iu <= nu - 2` and `cell.iv <= nv - 2`, so every read is inside its array.
+    /// The road this `PlainGrid` was made from is alive, its window's tile (if any) is
+    /// pinned, and `cell` came from [`PlainGrid::cell`] of this `PlainGrid`: then
+    /// [`sizes_agree`] held and `cell.iu <= nu - 2`, `cell.iv <= nv - 2` (in memory), or the
+    /// cell lies in the window's tile, so every read is inside its array.
     #[inline(always)]
     pub(crate) unsafe fn terms(&self, cell: &PlainCell) -> CellTerms {
         let nu = self.nu;
@@ -175,6 +327,20 @@ impl PlainGrid {
             corner_terms(*p, *p.add(1), *p.add(nu), *p.add(nu + 1))
         };
         CellTerms { iu: cell.iu, iv: cell.iv, corners }
+    }
+
+    /// The terms of `cell`'s grid values, read from the tiles of the road's grid read in
+    /// place (a tile not yet present is read from the file); `None` where the file cannot
+    /// be read (the general path then tells why).
+    ///
+    /// # Safety
+    /// The road this `PlainGrid` was made from is alive, and `cell` came from
+    /// [`PlainGrid::cell`] of this `PlainGrid`.
+    #[inline]
+    pub(crate) unsafe fn tile_terms(&self, cell: &PlainCell) -> Option<CellTerms> {
+        // SAFETY: the tiles belong to the road, which is alive (the contract above).
+        let [c00, c10, c01, c11] = unsafe { self.tiles.as_ref()?.corners(cell.iu, cell.iv) }?;
+        Some(CellTerms { iu: cell.iu, iv: cell.iv, corners: corner_terms(c00, c10, c01, c11) })
     }
 
     /// The elevation at `cell` from the terms of its grid values.
@@ -205,10 +371,29 @@ impl PlainGrid {
     }
 }
 
+/// A pinned tile of a grid read in place, and what [`PlainGrid::set_window`] sets for it.
+#[derive(Debug)]
+pub(crate) struct Window {
+    /// Keeps the tile pinned as long as the window lives.
+    _pin: Pin,
+    /// The common case's bounds in the window: u from, u to, v from, v to.
+    bounds: [f64; 4],
+    /// The tile's values, rebased as [`PlainGrid`] reads them.
+    z: *const f32,
+}
+
+// SAFETY: the pointer points into the pinned tile, which the window keeps pinned; it is
+// only read.
+unsafe impl Send for Window {}
+// SAFETY: as for `Send`.
+unsafe impl Sync for Window {}
+
 /// Where a point of the common case lies: its cell's interval indices and fractions,
 /// and its v (for the banking).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PlainCell {
+    /// Where the values of the cell's window lie (see [`Bounds`]).
+    z: *const f32,
     iu: usize,
     fu: f64,
     iv: usize,
@@ -223,6 +408,14 @@ pub(crate) struct CellTerms {
     corners: [f64; 4],
     iu: usize,
     iv: usize,
+}
+
+impl PlainCell {
+    /// The cell's interval indices along and across.
+    #[inline]
+    pub(crate) fn indices(&self) -> (usize, usize) {
+        (self.iu, self.iv)
+    }
 }
 
 impl CellTerms {

@@ -2,12 +2,14 @@
 //! header, the records of the data section, the reference line from its channels.
 
 use crate::base::error::{Error, Location, Result};
-use crate::model::grid::{Grid, GridValues, VLayout};
+use crate::model::grid::{Grid, GridValues, InPlace, Store, VLayout};
 use crate::model::header::{Channel, Header, RoadParams};
+use crate::model::in_place::Records;
 use crate::model::refline::{self, Defined, RefLine, Trig};
 use crate::model::road::{LoadOptions, Road, MAX_CELLS};
 use crate::model::sample_index::SampleIndex;
-use crate::read::reader::{self, DataSource};
+use crate::model::tiles::Tiles;
+use crate::read::reader::{self, DataSource, FileBytes};
 use crate::read::records::{self, Truncated};
 use std::path::Path;
 
@@ -85,7 +87,16 @@ impl Road {
         let err = |field: &str, msg: String| Error::format(&path, Location::File, field, msg);
         let (cols, sections) = channel_layout(&header, &err)?;
         let (u_first, u_inc) = u_axis(&header.road, &err)?;
-        let (z, b, nu) = read_records(&header, &data, &cols, &sections, u_first, u_inc)?;
+        let in_place = match &data.bytes {
+            FileBytes::Mapped(map) if !header.format.is_text() => load.in_place.applies(map.bytes().len() as u64)?,
+            _ => false,
+        };
+        let (z, b, nu) = if in_place {
+            read_in_place(&header, &data, &cols, &sections, u_first, u_inc, load.tile_cache_bytes()?)?
+        } else {
+            let (z, b, nu) = read_records(&header, &data, &cols, &sections, u_first, u_inc)?;
+            (Store::Memory(z), b, nu)
+        };
         let warnings = channel_warnings(&header, &path, &cols, &b, nu, u_first, u_inc);
         let mut header = header;
         header.warnings.extend(warnings);
@@ -97,14 +108,16 @@ impl Road {
     /// lines name (heading, slope, banking; one value per cross section), `z` the
     /// elevations long section by long section. The way new roads are made from old ones.
     pub(crate) fn assemble(header: Header, line: LineValues, z: Vec<f32>, load: LoadOptions) -> Result<Road> {
+        let z = Store::Memory(z);
         let path = header.path.clone();
         let err = |field: &str, msg: String| Error::format(&path, Location::File, field, msg);
         let (cols, sections) = channel_layout(&header, &err)?;
         let (u_first, u_inc) = u_axis(&header.road, &err)?;
         let nv = sections.v.len();
-        let nu = z.len() / nv;
-        if nu < 2 || nu * nv != z.len() || line.phi.len() != nu {
-            return Err(err("data section", format!("{} values do not make {nv} long sections", z.len())));
+        let len = z_len(&z);
+        let nu = len / nv;
+        if nu < 2 || nu * nv != len || line.phi.len() != nu {
+            return Err(err("data section", format!("{len} values do not make {nv} long sections")));
         }
         if nu.saturating_mul(nv) > MAX_CELLS {
             return Err(err("data section", format!("{nu} x {nv} cells exceed the supported size")));
@@ -131,7 +144,7 @@ impl Road {
         let grid = Grid {
             nu,
             nv,
-            z,
+            store: z,
             mean: 0.0,
             v,
             v_first,
@@ -186,11 +199,19 @@ pub(crate) struct LineValues {
     pub bank: Option<Vec<f64>>,
 }
 
+/// The number of values a grid in memory holds.
+fn z_len(z: &Store) -> usize {
+    match z {
+        Store::Memory(z) => z.len(),
+        Store::InPlace(_) => 0,
+    }
+}
+
 /// What a road is finished from: the channel layout, the grid and line values, the u axis.
 struct Parts {
     cols: ColumnMap,
     sections: LongSections,
-    z: Vec<f32>,
+    z: Store,
     b: Builder,
     nu: usize,
     u_first: f64,
@@ -349,6 +370,7 @@ fn read_records(
             ))
         }
     };
+    data.bytes.check(path)?;
     if nu < 2 {
         return Err(err("data section", format!("{nu} cross section(s) found, at least 2 are needed")));
     }
@@ -361,6 +383,77 @@ fn read_records(
         ));
     }
     Ok((z.finish().0, b, nu))
+}
+
+/// Reads a binary road in place: its reference line channels from every record (and
+/// nothing else of them), its grid as records of the file the tile pool reads from where
+/// evaluation asks.
+fn read_in_place(
+    header: &Header,
+    data: &DataSource,
+    cols: &ColumnMap,
+    sections: &LongSections,
+    u_first: f64,
+    u_inc: f64,
+    tile_cache: u64,
+) -> Result<(Store, Builder, usize)> {
+    let path = &data.path;
+    let err = |field: &str, msg: String| Error::format(path, Location::File, field, msg);
+    let FileBytes::Mapped(map) = &data.bytes else {
+        return Err(err("data section", "a road read in place needs its file mapped".into()));
+    };
+    let nv = sections.v.len();
+    let nch = header.channels.len();
+    let width = header.format.field_width();
+    let record_len = width * nch;
+    let available = (map.bytes().len() - data.offset) / record_len.max(1);
+    let declared = ((header.road.end_u.unwrap_or(u_first) - u_first) / u_inc + 0.5).floor() + 1.0;
+    if declared > available as f64 {
+        return Err(err(
+            "data section",
+            format!("holds {available} records of {record_len} bytes, the header declares {declared}"),
+        ));
+    }
+    let nu = declared as usize;
+    if nu.saturating_mul(nv) > MAX_CELLS {
+        return Err(err("data section", format!("{nu} x {nv} cells exceed the supported size")));
+    }
+    if nu < 2 {
+        return Err(err("data section", format!("{nu} cross section(s) found, at least 2 are needed")));
+    }
+    let records = Records::new(map.clone(), path, data.offset, (record_len, width), &sections.columns, nu)
+        .ok_or_else(|| err("data section", format!("{nu} records of {record_len} bytes do not fit the file")))?;
+    let mut b = Builder::new(cols, nu);
+    let wanted: Vec<usize> = [cols.x, cols.y, cols.u, cols.phi, cols.bank, cols.slope].into_iter().flatten().collect();
+    if !wanted.is_empty() {
+        // The reference line channels of every record: a pass over the file reading one
+        // or two cache lines of each record, the pages handed back as it goes.
+        const BATCH: usize = 1 << 14;
+        let mut rec = vec![0.0f64; nch];
+        for start in (0..nu).step_by(BATCH) {
+            let end = (start + BATCH).min(nu);
+            for i in start..end {
+                crate::base::memory::prefetch(records.record((i + 16).min(nu - 1)));
+                for &c in &wanted {
+                    rec[c] = records.channel(i, c);
+                }
+                b.push(i, &rec)?;
+            }
+            records.release(start, end);
+        }
+    }
+    records.check().map_err(|f| Error::reading(path, f.into_io()))?;
+    if let Some(bad) = b.first_nan_heading {
+        return Err(Error::format(
+            path,
+            Location::Record { record: bad + 1, channel: cols.phi.map(|c| c + 1) },
+            "reference line phi",
+            "heading is NaN",
+        ));
+    }
+    let cache = usize::try_from(tile_cache).unwrap_or(usize::MAX);
+    let store = Store::InPlace(InPlace::new(Tiles::new(std::sync::Arc::new(records), Vec::new(), cache)));
+    Ok((store, b, nu))
 }
 
 /// Warnings about the records that do not stop the load: text data ending before the

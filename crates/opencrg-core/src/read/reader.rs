@@ -6,6 +6,7 @@
 //! always win; of the referenced files, the first that defines a section is used.
 
 use crate::base::error::{Error, Location, Result};
+use crate::base::mapped_file::MappedFile;
 use crate::base::settings::{self, Accepts, Family};
 use crate::model::header::{Channel, DataFormat, Header, RoadKey, OFFSET_KEYS, ROAD_KEYS};
 use crate::read::map_section::{self, MapEntry};
@@ -21,9 +22,10 @@ pub const MAX_REFERENCE_DEPTH: usize = 16;
 const IGNORED_OPTION_KEYWORDS: [&str; 7] =
     ["log_msgs", "log_eval", "log_eval_freq", "log_hist", "log_hist_freq", "log_stat", "log_stat_freq"];
 
-/// The bytes of a file: memory-mapped when possible.
+/// The bytes of a file: memory-mapped when possible (a road read in place keeps the
+/// mapping).
 pub(crate) enum FileBytes {
-    Mapped(memmap2::Mmap),
+    Mapped(std::sync::Arc<MappedFile>),
     Owned(Vec<u8>),
 }
 
@@ -31,7 +33,7 @@ impl std::ops::Deref for FileBytes {
     type Target = [u8];
     fn deref(&self) -> &[u8] {
         match self {
-            FileBytes::Mapped(m) => m,
+            FileBytes::Mapped(m) => m.bytes(),
             FileBytes::Owned(v) => v,
         }
     }
@@ -42,12 +44,17 @@ impl FileBytes {
     /// memory: they have been decoded and will not be read again (see
     /// [`crate::base::memory::release_mapped`]).
     pub(crate) fn release(&self, start: usize, end: usize) {
-        const PAGE: usize = 4096;
         if let FileBytes::Mapped(map) = self {
-            let (first, last) = (start.div_ceil(PAGE) * PAGE, end / PAGE * PAGE);
-            if last > first {
-                crate::base::memory::release_mapped(map, first, last - first);
-            }
+            map.release(start, end);
+        }
+    }
+
+    /// Whether the bytes read so far can be trusted (a mapped file may have been cut
+    /// short or changed meanwhile); the error names `path`.
+    pub(crate) fn check(&self, path: &Path) -> Result<()> {
+        match self {
+            FileBytes::Mapped(map) => map.check().map_err(|f| Error::reading(path, f.into_io())),
+            FileBytes::Owned(_) => Ok(()),
         }
     }
 }
@@ -131,10 +138,8 @@ fn open(path: &Path) -> Result<FileBytes> {
     if meta.len() == 0 {
         return Err(Error::format(path, Location::File, "file", "is empty"));
     }
-    // SAFETY: the map is read-only; a file changed by another process while it is
-    // mapped can change the bytes we read, never memory safety of this process.
-    match unsafe { memmap2::Mmap::map(&file) } {
-        Ok(map) => Ok(FileBytes::Mapped(map)),
+    match MappedFile::open(file) {
+        Ok(map) => Ok(FileBytes::Mapped(std::sync::Arc::new(map))),
         Err(_) => std::fs::read(path).map(FileBytes::Owned).map_err(io),
     }
 }
@@ -202,6 +207,9 @@ impl Loader<'_> {
         self.stack.push(canonical);
         let result = self.parse(path, &bytes, level);
         self.stack.pop();
+        // A file cut short while its header was read is told as such, not as what the
+        // zeros read in its place would look like.
+        bytes.check(path)?;
         if let Some(offset) = result? {
             if self.data.is_some() {
                 return Err(Error::format(path, Location::File, "data section", "a second data section was found"));

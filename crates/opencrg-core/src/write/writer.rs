@@ -159,7 +159,9 @@ pub fn write_to(road: &Road, out: &mut impl Write, format: DataFormat) -> io::Re
     let mut row: Vec<f64> = Vec::with_capacity(g.nv + 3);
     let mut text = String::new();
     let mut bytes_written = 0usize;
-    for iu in 0..g.nu {
+    let mean = g.mean;
+    let read_range = (g.v_first, g.v_last);
+    g.rows(0..g.nu, |iu, values| -> io::Result<()> {
         row.clear();
         if by_points {
             row.push(l.x[iu]);
@@ -168,19 +170,18 @@ pub fn write_to(road: &Road, out: &mut impl Write, format: DataFormat) -> io::Re
         for ch in [&l.phi, &l.slope, &l.bank].into_iter().flatten() {
             row.push(ch[iu]);
         }
-        let mean = g.mean;
-        let read_range = (g.v_first, g.v_last);
         if l.has_bank && read_range != sections {
             // Banking acts within the sections' range in the file written: each node keeps
             // its surface.
             let bank = l.bank.as_ref().map_or(l.bank_first, |b| b[iu]);
             row.extend(
-                g.cross_section(iu)
+                values
+                    .iter()
                     .zip(&g.v)
-                    .map(|(z, &v)| f64::from(z) + mean + bank * (bank_v(v, read_range) - bank_v(v, sections))),
+                    .map(|(&z, &v)| f64::from(z) + mean + bank * (bank_v(v, read_range) - bank_v(v, sections))),
             );
         } else {
-            row.extend(g.cross_section(iu).map(|z| if mean == 0.0 { f64::from(z) } else { f64::from(z) + mean }));
+            row.extend(values.iter().map(|&z| if mean == 0.0 { f64::from(z) } else { f64::from(z) + mean }));
         }
         if format.is_text() {
             text.clear();
@@ -203,7 +204,8 @@ pub fn write_to(road: &Road, out: &mut impl Write, format: DataFormat) -> io::Re
                 bytes_written += width;
             }
         }
-    }
+        Ok(())
+    })?;
     if !format.is_text() {
         while !bytes_written.is_multiple_of(80) {
             if width == 4 {

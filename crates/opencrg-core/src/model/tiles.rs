@@ -1,0 +1,396 @@
+//! The decoded values of a grid read in place, in tiles laid out for the wheel: a tile
+//! holds 256 cross sections of 16 long sections (and the next cross and long section,
+//! so that every cell whose first corner lies in it lies wholly in it), long section by
+//! long section, in single precision after the modifiers' operations; a lookup reads
+//! four values of one tile, as a grid in memory reads four of its own.
+//!
+//! The file holds cross section after cross section: a wheel moving along the road meets
+//! a new record (a new page of the file) every centimetre. Read in place, each cell a
+//! wheel enters would cost two cache misses in the file (measured: three to six times
+//! the lookup in memory at 30 to 50 m/s); a tile costs one pass over 257 records once,
+//! reading only the 17 values of each that it keeps, and then serves every wheel that
+//! drives over it as memory does.
+//!
+//! Tiles live in a pool of slots of bounded size (the road's cache, say 64 MiB); a
+//! directory gives the slot of each tile present. Lookups take no lock and write nothing
+//! shared: each slot carries a sequence number that is odd while the slot is written and
+//! grows with every change, and a lookup that reads the same even number before and after
+//! its values has read one tile whole (a sequence lock). A contact point may also pin a
+//! tile ([`Pin`]): a pinned slot is never filled again until unpinned, so the contact
+//! point reads it as plain memory, as it reads a grid in memory. Filling a tile takes the
+//! pool's lock: it claims the slot filled longest ago that nobody pins, reads the records,
+//! checks the file, and publishes the tile.
+
+use crate::base::mapped_file::Fault;
+use crate::model::in_place::{apply, change_numbers, read_words, Records, RowWalker, ValueOp};
+use std::sync::atomic::{fence, AtomicU32, AtomicUsize, Ordering};
+use std::sync::{Arc, Mutex, PoisonError};
+
+/// Cross sections a tile holds cells of.
+pub const TILE_U: usize = 256;
+/// Long sections a tile holds cells of.
+pub const TILE_V: usize = 16;
+/// Values between a tile's long sections.
+pub(crate) const TILE_STRIDE: usize = TILE_U + 1;
+/// Values of a tile.
+const TILE_LEN: usize = TILE_STRIDE * (TILE_V + 1);
+/// Bytes of a tile.
+pub const TILE_BYTES: usize = TILE_LEN * 4;
+/// What a slot holds for no tile (the directory holds 0 for a tile not present, else its
+/// slot plus one).
+const ABSENT: u32 = u32::MAX;
+/// The fewest slots a pool has, whatever its size: a few wheels' tiles at once.
+const MIN_SLOTS: usize = 16;
+
+/// One slot of the pool: which tile it holds, its sequence number, and how many pins
+/// keep it (`CLAIMED` while it is being filled).
+struct Slot {
+    seq: AtomicU32,
+    tile: AtomicU32,
+    pins: AtomicU32,
+}
+
+/// What a slot's pin count holds while the slot is being filled.
+const CLAIMED: u32 = u32::MAX;
+
+/// Why a tile was not filled.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum FillError {
+    /// The file cannot be read.
+    File(Fault),
+    /// Every slot is pinned.
+    Full,
+}
+
+/// A tile kept in its slot for a contact point: until it is dropped, the slot holds this
+/// tile and nothing writes it.
+pub(crate) struct Pin {
+    tiles: Arc<Tiles>,
+    slot: usize,
+    /// The first cross and long section of the tile.
+    iu0: usize,
+    iv0: usize,
+}
+
+impl Pin {
+    /// The tile's values, long section by long section, [`TILE_STRIDE`] apart.
+    pub(crate) fn values(&self) -> *const f32 {
+        self.tiles.values[self.slot * TILE_LEN..].as_ptr().cast::<f32>()
+    }
+
+    /// The first cross and long section of the tile.
+    pub(crate) fn origin(&self) -> (usize, usize) {
+        (self.iu0, self.iv0)
+    }
+}
+
+impl Drop for Pin {
+    fn drop(&mut self) {
+        self.tiles.slots[self.slot].pins.fetch_sub(1, Ordering::Release);
+    }
+}
+
+impl std::fmt::Debug for Pin {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Pin").field("slot", &self.slot).field("origin", &(self.iu0, self.iv0)).finish()
+    }
+}
+
+/// What filling needs, behind the pool's lock.
+struct FillState {
+    /// Slots used so far (the pool grows up to its size).
+    used: usize,
+    /// The slot filled next once all are used (the one filled longest ago).
+    next: usize,
+    /// The first fault met: after it nothing more is read from the file.
+    fault: Option<Fault>,
+}
+
+/// The tile pool of a grid read in place with a list of operations.
+pub(crate) struct Tiles {
+    records: Arc<Records>,
+    ops: Vec<ValueOp>,
+    /// Tiles across the road.
+    tiles_v: usize,
+    directory: Box<[AtomicU32]>,
+    slots: Box<[Slot]>,
+    values: Box<[AtomicU32]>,
+    fill: Mutex<FillState>,
+    /// Tiles filled so far.
+    fills: AtomicUsize,
+}
+
+impl std::fmt::Debug for Tiles {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Tiles")
+            .field("file", &self.records.path())
+            .field("ops", &self.ops)
+            .field("slots", &self.slots.len())
+            .finish()
+    }
+}
+
+impl Tiles {
+    /// A pool of at most `cache_bytes` for `records` read with `ops`.
+    pub(crate) fn new(records: Arc<Records>, ops: Vec<ValueOp>, cache_bytes: usize) -> Tiles {
+        let tiles_u = records.nu().saturating_sub(1).div_ceil(TILE_U).max(1);
+        let tiles_v = records.nv().saturating_sub(1).div_ceil(TILE_V).max(1);
+        let count = tiles_u * tiles_v;
+        let slots = (cache_bytes / TILE_BYTES).max(MIN_SLOTS).min(count).min(ABSENT as usize - 1);
+        Tiles {
+            records,
+            ops,
+            tiles_v,
+            directory: crate::base::memory::large_zeroed_atomics(count),
+            slots: (0..slots)
+                .map(|_| Slot { seq: AtomicU32::new(0), tile: AtomicU32::new(ABSENT), pins: AtomicU32::new(0) })
+                .collect(),
+            values: crate::base::memory::large_zeroed_atomics(slots * TILE_LEN),
+            fill: Mutex::new(FillState { used: 0, next: 0, fault: None }),
+            fills: AtomicUsize::new(0),
+        }
+    }
+
+    /// The same records with `op` after the operations so far, in a new pool of the same size.
+    pub(crate) fn with_op(&self, op: ValueOp) -> Tiles {
+        let mut ops = self.ops.clone();
+        ops.push(op);
+        Tiles::new(self.records.clone(), ops, self.capacity())
+    }
+
+    /// The pool's size in bytes.
+    pub(crate) fn capacity(&self) -> usize {
+        self.slots.len() * TILE_BYTES
+    }
+
+    /// The records read.
+    pub(crate) fn records(&self) -> &Records {
+        &self.records
+    }
+
+    /// The operations applied to every value read.
+    pub(crate) fn ops(&self) -> &[ValueOp] {
+        &self.ops
+    }
+
+    /// Tiles filled so far.
+    pub(crate) fn fills(&self) -> usize {
+        self.fills.load(Ordering::Relaxed)
+    }
+
+    /// The first fault met reading the file, if any.
+    pub(crate) fn fault(&self) -> Option<Fault> {
+        self.fill.lock().unwrap_or_else(PoisonError::into_inner).fault
+    }
+
+    /// The values of the cell whose first corner is (`iu`, `iv`) (each below the last
+    /// cross and long section): (iu, iv), (iu + 1, iv), (iu, iv + 1), (iu + 1, iv + 1).
+    /// `None` when its tile cannot be read (the fault is kept, see [`Tiles::fault`]).
+    #[inline]
+    pub(crate) fn corners(&self, iu: usize, iv: usize) -> Option<[f32; 4]> {
+        let (id, at) = self.place(iu, iv)?;
+        loop {
+            if let Some(values) = self.try_read(id, at) {
+                return Some(values);
+            }
+            match self.fill(id) {
+                Ok(()) => {}
+                Err(FillError::Full) => return self.read_corners(iu, iv),
+                Err(FillError::File(_)) => return None,
+            }
+        }
+    }
+
+    /// The cell's values read from the file directly (every slot being pinned).
+    #[cold]
+    fn read_corners(&self, iu: usize, iv: usize) -> Option<[f32; 4]> {
+        let mut walker = RowWalker::new(&self.records, &self.ops);
+        let (a, b) = {
+            let row = walker.row(iu);
+            (*row.get(iv)?, *row.get(iv + 1)?)
+        };
+        let row = walker.row(iu + 1);
+        let values = [a, *row.get(iv)?, b, *row.get(iv + 1)?];
+        self.records.check().ok().map(|()| values)
+    }
+
+    /// Pins the tile holding the cell whose first corner is (`iu`, `iv`), when it is
+    /// present (nothing is read from the file; nothing can panic).
+    pub(crate) fn pin(self: &Arc<Self>, iu: usize, iv: usize) -> Option<Pin> {
+        let (id, _) = self.place(iu, iv)?;
+        let s = self.directory.get(id)?.load(Ordering::Acquire).wrapping_sub(1) as usize;
+        let slot = self.slots.get(s)?;
+        let mut pins = slot.pins.load(Ordering::Relaxed);
+        loop {
+            if pins == CLAIMED || pins == CLAIMED - 1 {
+                return None;
+            }
+            match slot.pins.compare_exchange_weak(pins, pins + 1, Ordering::Acquire, Ordering::Relaxed) {
+                Ok(_) => break,
+                Err(now) => pins = now,
+            }
+        }
+        let pin =
+            Pin { tiles: self.clone(), slot: s, iu0: id / self.tiles_v * TILE_U, iv0: id % self.tiles_v * TILE_V };
+        // Pinned, the slot keeps what it holds; it may have been filled anew before.
+        (slot.tile.load(Ordering::Acquire) as usize == id).then_some(pin)
+    }
+
+    /// The tile of the cell (`iu`, `iv`) and where the cell's first corner lies in it.
+    #[inline(always)]
+    fn place(&self, iu: usize, iv: usize) -> Option<(usize, usize)> {
+        let (tu, tv) = (iu / TILE_U, iv / TILE_V);
+        let id = tu * self.tiles_v + tv;
+        let at = (iv - tv * TILE_V) * TILE_STRIDE + (iu - tu * TILE_U);
+        (tv < self.tiles_v && id < self.directory.len()).then_some((id, at))
+    }
+
+    /// The cell's values when its tile is present and was read whole.
+    #[inline(always)]
+    fn try_read(&self, id: usize, at: usize) -> Option<[f32; 4]> {
+        let s = self.directory.get(id)?.load(Ordering::Acquire).wrapping_sub(1) as usize;
+        let slot = self.slots.get(s)?;
+        let seq = slot.seq.load(Ordering::Acquire);
+        if seq & 1 != 0 || slot.tile.load(Ordering::Relaxed) as usize != id {
+            return None;
+        }
+        let v = self.values.get(s * TILE_LEN + at..)?.get(..TILE_STRIDE + 2)?;
+        // What a wheel moving on along u reads next, as a grid in memory asks for it (only
+        // the addresses are computed).
+        crate::base::memory::prefetch(v.as_ptr().wrapping_add(AHEAD));
+        crate::base::memory::prefetch(v.as_ptr().wrapping_add(TILE_STRIDE + AHEAD));
+        let read = |a: &AtomicU32| f32::from_bits(a.load(Ordering::Relaxed));
+        let values = [read(&v[0]), read(&v[1]), read(&v[TILE_STRIDE]), read(&v[TILE_STRIDE + 1])];
+        fence(Ordering::Acquire);
+        (slot.seq.load(Ordering::Relaxed) == seq).then_some(values)
+    }
+
+    /// Fills tile `id` into a slot (unless another thread did meanwhile): the next slot
+    /// nobody pins, in the order they were filled.
+    #[cold]
+    fn fill(&self, id: usize) -> Result<(), FillError> {
+        let mut state = self.fill.lock().unwrap_or_else(PoisonError::into_inner);
+        if let Some(fault) = state.fault {
+            return Err(FillError::File(fault));
+        }
+        let present = self.directory[id].load(Ordering::Acquire).wrapping_sub(1) as usize;
+        if self.slots.get(present).is_some_and(|s| s.tile.load(Ordering::Relaxed) as usize == id) {
+            return Ok(());
+        }
+        let claim =
+            |s: usize| self.slots[s].pins.compare_exchange(0, CLAIMED, Ordering::Acquire, Ordering::Relaxed).is_ok();
+        let s = if state.used < self.slots.len() && claim(state.used) {
+            state.used += 1;
+            state.used - 1
+        } else {
+            let n = self.slots.len();
+            let found = (0..n).map(|k| (state.next + k) % n).find(|&s| claim(s)).ok_or(FillError::Full)?;
+            state.next = (found + 1) % n;
+            found
+        };
+        let slot = &self.slots[s];
+        let old = slot.tile.load(Ordering::Relaxed);
+        if let Some(entry) = self.directory.get(old as usize) {
+            entry.store(0, Ordering::Relaxed);
+        }
+        let seq = slot.seq.load(Ordering::Relaxed);
+        slot.seq.store(seq.wrapping_add(1), Ordering::Relaxed);
+        fence(Ordering::Release);
+        let decoded = self.decode(id, &self.values[s * TILE_LEN..(s + 1) * TILE_LEN]);
+        let tile = if decoded.is_ok() { id as u32 } else { ABSENT };
+        slot.tile.store(tile, Ordering::Relaxed);
+        slot.seq.store(seq.wrapping_add(2), Ordering::Release);
+        slot.pins.store(0, Ordering::Release);
+        match decoded {
+            Ok(()) => {
+                self.directory[id].store(s as u32 + 1, Ordering::Release);
+                self.fills.fetch_add(1, Ordering::Relaxed);
+                Ok(())
+            }
+            Err(fault) => {
+                state.fault = Some(fault);
+                Err(FillError::File(fault))
+            }
+        }
+    }
+
+    /// Reads tile `id` from the file into `out`, then checks that the file could be trusted.
+    /// Records are read in blocks of [`BLOCK`]: each record's run of values read (as one
+    /// block of words where the run lies so in every record) and the operations applied to
+    /// it, then each of the tile's long sections written as one piece of the block's values.
+    fn decode(&self, id: usize, out: &[AtomicU32]) -> Result<(), Fault> {
+        const RUN: usize = TILE_V + 1;
+        let r = &*self.records;
+        let (tu, tv) = (id / self.tiles_v, id % self.tiles_v);
+        let (iu0, iv0) = (tu * TILE_U, tv * TILE_V);
+        let (nu, nv) = (r.nu(), r.nv());
+        let columns = RUN.min(nv - iv0);
+        let last = nu - 1 - iu0;
+        let words = r.words_start(iv0, RUN);
+        let change = change_numbers(&self.ops);
+        let stride = r.record(1) as usize - r.record(0) as usize;
+        let mut walker: Option<RowWalker> = None;
+        // The block's values long section by long section, as the tile holds them.
+        let mut block = [[0u32; BLOCK]; RUN];
+        let mut run = [0u32; RUN];
+        let mut row = [0.0f32; RUN];
+        for first in (0..TILE_STRIDE).step_by(BLOCK) {
+            let count = (TILE_STRIDE - first).min(BLOCK);
+            for k in 0..count {
+                let run = &mut run;
+                let i = (first + k).min(last);
+                // What the records a block on hold is asked for now: the pass waits for
+                // memory, not for arithmetic.
+                let ahead = r.value_address(iu0 + (i + BLOCK).min(last), iv0);
+                crate::base::memory::prefetch(ahead);
+                crate::base::memory::prefetch(ahead.wrapping_add(4 * TILE_V));
+                let nan = match words {
+                    // SAFETY: `words_start` found every record's run of RUN values whole in
+                    // the record, and `iu0 + i` is a record of the file.
+                    Some(start) => unsafe { read_words(start.add((iu0 + i) * stride), run) },
+                    None => {
+                        r.read_run(iu0 + i, iv0, &mut row[..columns]);
+                        for (w, z) in run.iter_mut().zip(&row[..columns]) {
+                            *w = z.to_bits();
+                        }
+                        true
+                    }
+                };
+                // The operations change a value only by scaling or an offset, or where a
+                // NaN is handled.
+                if change || (nan && !self.ops.is_empty()) {
+                    for (z, w) in row.iter_mut().zip(run.iter()) {
+                        *z = f32::from_bits(*w);
+                    }
+                    let values = &mut row[..columns];
+                    if !apply(&self.ops, values) {
+                        let whole = walker.get_or_insert_with(|| RowWalker::new(r, &self.ops)).row(iu0 + i);
+                        values.copy_from_slice(&whole[iv0..iv0 + columns]);
+                    }
+                    for (w, z) in run.iter_mut().zip(values.iter()) {
+                        *w = z.to_bits();
+                    }
+                }
+                for (long, &w) in block.iter_mut().zip(run.iter()) {
+                    long[k] = w;
+                }
+            }
+            // Beyond the last long section of the road the tile repeats it (never read as
+            // a corner).
+            for (j, long) in out.chunks_exact(TILE_STRIDE).enumerate() {
+                let values = &block[j.min(columns - 1).min(RUN - 1)][..count];
+                let Some(piece) = long.get(first..first + count) else { continue };
+                for (slot, &w) in piece.iter().zip(values) {
+                    slot.store(w, Ordering::Relaxed);
+                }
+            }
+        }
+        r.check()
+    }
+}
+
+/// How far ahead along u (in values) a lookup asks for the tile: the next cache line.
+const AHEAD: usize = 16;
+
+/// Records a tile is read in at a time.
+const BLOCK: usize = 16;
