@@ -5,20 +5,32 @@
 //! 65 MB of grid; curve radii down to about 125 m). Roads already there are kept; names
 //! after the folder (without `.crg`) make only those.
 //!
+//! Two roads larger than most memories are made only when named (streamed to the file,
+//! never held in memory): `winding_10km_4gb_krbi`, 10 km x 10 m at 1 cm (4.0 GB), and
+//! `proving_ground_16gb_krbi`, 10 km x 40 m at 1 cm (16.0 GB), both with heading, slope
+//! and banking channels.
+//!
 //!     cargo run --release -p opencrg-core --example make_bench_roads -- target/bench-roads [NAME ...]
 
 use opencrg_core::synth::RoadSpec;
 use opencrg_core::{DataFormat, Road};
 
-/// How a benchmark road is made.
-type Make = fn() -> opencrg_core::Result<Road>;
+/// How a benchmark road is made: in memory and written, or streamed into its file.
+#[derive(Clone, Copy)]
+enum Make {
+    Road(fn() -> opencrg_core::Result<Road>),
+    Streamed(fn() -> RoadSpec),
+}
 
-/// The benchmark roads: file name (without `.crg`), format, and how to make the road.
-const ROADS: [(&str, DataFormat, Make); 4] = [
-    ("track_500m_krbi", DataFormat::Krbi, track),
-    ("track_500m_lrfi", DataFormat::Lrfi, track),
-    ("winding_10km_krbi", DataFormat::Krbi, winding),
-    ("winding_sloped_banked_2km_krbi", DataFormat::Krbi, hilly),
+/// The benchmark roads: file name (without `.crg`), format, how to make the road, and
+/// whether it is made without being named.
+const ROADS: [(&str, DataFormat, Make, bool); 6] = [
+    ("track_500m_krbi", DataFormat::Krbi, Make::Road(track), true),
+    ("track_500m_lrfi", DataFormat::Lrfi, Make::Road(track), true),
+    ("winding_10km_krbi", DataFormat::Krbi, Make::Road(winding), true),
+    ("winding_sloped_banked_2km_krbi", DataFormat::Krbi, Make::Road(hilly), true),
+    ("winding_10km_4gb_krbi", DataFormat::Krbi, Make::Streamed(big_4gb), false),
+    ("proving_ground_16gb_krbi", DataFormat::Krbi, Make::Streamed(big_16gb), false),
 ];
 
 /// The elevation grid every road carries: bumps of a centimetre.
@@ -46,6 +58,23 @@ fn hilly() -> opencrg_core::Result<Road> {
         .build()
 }
 
+/// A long road of `width` metres at 1 cm both ways, winding, sloped and banked.
+fn big(width: f64) -> RoadSpec {
+    RoadSpec::straight(10_000.0, width, 0.01, 0.01)
+        .with_heading(|u| 3.0 * (u / 400.0).sin() + u / 2000.0)
+        .with_slope(|u| 0.04 * (u / 150.0).sin())
+        .with_bank(|u| 0.03 * (u / 90.0 + 1.0).sin())
+        .with_elevation(surface)
+}
+
+fn big_4gb() -> RoadSpec {
+    big(10.0)
+}
+
+fn big_16gb() -> RoadSpec {
+    big(40.0)
+}
+
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);
     let dir = std::path::PathBuf::from(args.next().unwrap_or_else(|| "target/bench-roads".into()));
@@ -54,13 +83,21 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         return Err(format!("no benchmark road is named {unknown}").into());
     }
     std::fs::create_dir_all(&dir)?;
-    for (name, format, make) in ROADS {
-        if !wanted.is_empty() && !wanted.iter().any(|w| w == name) {
+    for (name, format, make, by_default) in ROADS {
+        if !(wanted.is_empty() && by_default || wanted.iter().any(|w| w == name)) {
             continue;
         }
         let path = dir.join(format!("{name}.crg"));
         if !path.exists() {
-            opencrg_core::write(&make()?, &path, format)?;
+            match make {
+                Make::Road(make) => opencrg_core::write(&make()?, &path, format)?,
+                Make::Streamed(spec) => {
+                    // Written under another name first: an interrupted run leaves no road.
+                    let partial = path.with_extension("partial");
+                    spec().write(&partial, format)?;
+                    std::fs::rename(&partial, &path)?;
+                }
+            }
         }
         println!("{}", path.display());
     }

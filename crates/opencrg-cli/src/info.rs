@@ -1,6 +1,7 @@
 //! `opencrg info`: what a road file holds, as text or JSON.
 
 use opencrg_core::header::Channel;
+use opencrg_core::info::GridScan;
 use opencrg_core::settings::{name, Value};
 use opencrg_core::{Road, Settings};
 use serde_json::{json, Value as Json};
@@ -30,15 +31,34 @@ fn wgs84_json(road: &Road, end: bool) -> Json {
     }
 }
 
-/// The facts `info` reports, as JSON.
-pub fn facts(road: &Road, path: &str) -> Json {
+/// What a scan of the grid finds: at once for a grid in memory; for a grid read in place
+/// only when `whole` asks (it reads the whole file, with a progress bar), else `None`.
+pub fn scanned(road: &Road, whole: bool) -> Result<Option<GridScan>, String> {
+    if road.grid().is_in_place() && !whole {
+        return Ok(None);
+    }
+    let bar = indicatif::ProgressBar::new(road.grid().nu as u64);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("scanning the grid {bar:40} {percent:>3} %  {elapsed}")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    );
+    if !road.grid().is_in_place() {
+        bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
+    }
+    let found = opencrg_core::info::scan(road, &mut |done, _| bar.set_position(done as u64)).map_err(|e| e.to_string());
+    bar.finish_and_clear();
+    found.map(Some)
+}
+
+/// The facts `info` reports, as JSON (the grid's range and NaN cells null where it was
+/// not scanned).
+pub fn facts(road: &Road, path: &str, scan: Option<&GridScan>) -> Json {
     let h = road.header();
     let g = road.grid();
     let s = road.statistics();
     let (u0, u1) = road.u_range();
     let (v0, v1) = road.v_range();
     let (du, dv) = road.increments();
-    let nan = g.values().iter().filter(|z| z.is_nan()).count();
     let o = road.global_origin();
     json!({
         "file": path,
@@ -56,8 +76,12 @@ pub fn facts(road: &Road, path: &str) -> Json {
             "z": [s.z_line.0, s.z_line.1],
             "closed": road.closed_track().map(|(a, b)| vec![a, b]),
         },
-        "elevation": { "min": s.z_min, "max": s.z_max, "mean_start": s.z_mean_start, "mean_end": s.z_mean_end },
-        "nan_cells": nan,
+        "elevation": {
+            "min": scan.map(|s| s.z_min), "max": scan.map(|s| s.z_max),
+            "mean_start": s.z_mean_start, "mean_end": s.z_mean_end,
+        },
+        "nan_cells": scan.map(|s| s.nan_cells),
+        "in_place": g.is_in_place(),
         "global_origin": { "x": o.x, "y": o.y, "z": o.z, "phi": o.phi },
         "map_projection": h.map.as_ref().map(|m| json!({
             "projection": m.projection.name, "local_ellipsoid": m.local.name, "global_ellipsoid": m.global.name,
@@ -71,6 +95,6 @@ pub fn facts(road: &Road, path: &str) -> Json {
 }
 
 /// The facts as lines of text.
-pub fn text(road: &Road, path: &str) -> String {
-    opencrg_core::info::text(road, path)
+pub fn text(road: &Road, path: &str, scan: Option<&GridScan>) -> String {
+    opencrg_core::info::text_scanned(road, path, scan)
 }

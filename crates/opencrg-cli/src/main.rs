@@ -1,7 +1,7 @@
 //! `opencrg`: look into, check, convert, evaluate and render OpenCRG road files.
 //!
 //! ```text
-//! opencrg info ROAD [--json]
+//! opencrg info ROAD [--json] [--scan]
 //! opencrg check ROAD
 //! opencrg convert IN OUT --format KRBI|KDBI|LRFI|LDFI
 //! opencrg eval ROAD [--xy] [options] < points
@@ -73,6 +73,9 @@ enum Command {
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
+        /// Read a grid read in place whole, for its elevation range and NaN cells.
+        #[arg(long)]
+        scan: bool,
     },
     /// The library's checks (options, modifiers, curvature against width): exit status 0 or 1.
     Check {
@@ -308,13 +311,15 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
     }
     .raised_with("--max-memory");
     match cli.command {
-        Command::Info { road, json } => {
+        Command::Info { road, json, scan } => {
             let r = load(&road)?;
             let name = road.display().to_string();
+            let scan = info::scanned(&r, scan)?;
             if json {
-                println!("{}", serde_json::to_string_pretty(&info::facts(&r, &name)).map_err(|e| e.to_string())?);
+                let facts = info::facts(&r, &name, scan.as_ref());
+                println!("{}", serde_json::to_string_pretty(&facts).map_err(|e| e.to_string())?);
             } else {
-                print!("{}", info::text(&r, &name));
+                print!("{}", info::text(&r, &name, scan.as_ref()));
             }
         }
         Command::Check { road } => {

@@ -32,8 +32,14 @@ fn write_road(d: &Path) -> PathBuf {
 }
 
 fn opencrg(args: &[&str], stdin: Option<&str>) -> Output {
+    opencrg_with(args, stdin, &[])
+}
+
+/// `opencrg` with environment variables set.
+fn opencrg_with(args: &[&str], stdin: Option<&str>, env: &[(&str, &str)]) -> Output {
     let mut child = Command::new(env!("CARGO_BIN_EXE_opencrg"))
         .args(args)
+        .envs(env.iter().copied())
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
@@ -47,11 +53,35 @@ fn text(b: &[u8]) -> String {
     String::from_utf8_lossy(b).into_owned()
 }
 
+/// A road read in place: `info` says its grid was not scanned (in text and as null in
+/// JSON), and with `--scan` reports what the road read into memory reports.
+#[test]
+fn info_scans_a_road_read_in_place_when_asked() {
+    let d = dir("info-in-place");
+    let road = d.join("road.crg");
+    spec().write(&road, opencrg_core::DataFormat::Krbi).unwrap();
+    let road = road.to_str().unwrap();
+    let run = |args: &[&str], mode: &str| {
+        let out = opencrg_with(args, None, &[("OPENCRG_IN_PLACE", mode)]);
+        assert!(out.status.success(), "{}", text(&out.stderr));
+        text(&out.stdout)
+    };
+    let memory = run(&["info", road], "never");
+    assert!(memory.contains("NaN cells      1"), "{memory}");
+    let placed = run(&["info", road], "always");
+    assert!(placed.contains("elevation      not scanned") && !placed.contains("NaN cells"), "{placed}");
+    assert_eq!(run(&["info", road, "--scan"], "always"), memory);
+    let j: serde_json::Value = serde_json::from_str(&run(&["info", road, "--json"], "always")).unwrap();
+    assert!(j["nan_cells"].is_null() && j["elevation"]["min"].is_null() && j["in_place"] == true, "{j}");
+    let j: serde_json::Value = serde_json::from_str(&run(&["info", road, "--json", "--scan"], "always")).unwrap();
+    assert_eq!(j["nan_cells"], 1);
+}
+
 #[test]
 fn info_reports_the_known_figures() {
     let d = dir("info");
     let road = write_road(&d);
-    let out = opencrg(&["info", road.to_str().unwrap(), "--json"], None);
+    let out = opencrg_with(&["info", road.to_str().unwrap(), "--json"], None, &[("OPENCRG_IN_PLACE", "never")]);
     assert!(out.status.success(), "{}", text(&out.stderr));
     let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(j["format"], "KDBI");

@@ -34,8 +34,62 @@ pub fn wgs84(road: &Road, end: bool) -> Option<([f64; 3], &'static str)> {
     road.header().road.wgs84(end).map(|p| (p, "file keywords"))
 }
 
-/// What `road` holds, line by line, the file named `path`.
+/// What a pass over the whole grid finds: how many cells are NaN, and the lowest and
+/// highest elevation as the road's statistics give them (see
+/// [`Statistics`](crate::report::Statistics)).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GridScan {
+    /// Cells without an elevation.
+    pub nan_cells: usize,
+    /// The lowest elevation.
+    pub z_min: f64,
+    /// The highest elevation.
+    pub z_max: f64,
+}
+
+/// Scans the grid of `road`: from memory, or read from the file of a grid read in place
+/// cross section after cross section (its pages handed back as it goes, so that a grid
+/// larger than memory passes through), `progress` told (cross sections done, in all)
+/// every 64 Mi values. Refused: a file that could not be read, naming it.
+pub fn scan(road: &Road, progress: &mut dyn FnMut(usize, usize)) -> crate::Result<GridScan> {
+    let g = road.grid();
+    let s = road.statistics();
+    if !g.is_in_place() {
+        let nan_cells = g.values().iter().filter(|z| z.is_nan()).count();
+        return Ok(GridScan { nan_cells, z_min: s.z_min, z_max: s.z_max });
+    }
+    let (mut nan_cells, mut lo, mut hi) = (0, f32::INFINITY, f32::NEG_INFINITY);
+    let every = (64 << 20) / g.nv.max(1);
+    g.rows(0..g.nu, |iu, row| {
+        for &z in row {
+            if z.is_nan() {
+                nan_cells += 1;
+            } else {
+                lo = lo.min(z);
+                hi = hi.max(z);
+            }
+        }
+        if iu % every.max(1) == 0 {
+            progress(iu, g.nu);
+        }
+        Ok::<(), crate::Error>(())
+    })?;
+    progress(g.nu, g.nu);
+    let start = s.z_mean_start - g.mean;
+    Ok(GridScan { nan_cells, z_min: start.min(f64::from(lo)) + g.mean, z_max: start.max(f64::from(hi)) + g.mean })
+}
+
+/// What `road` holds, line by line, the file named `path` (a grid read in place not
+/// scanned: see [`text_scanned`]).
 pub fn text(road: &Road, path: &str) -> String {
+    let g = road.grid();
+    let scanned = (!g.is_in_place()).then(|| scan(road, &mut |_, _| {}).ok()).flatten();
+    text_scanned(road, path, scanned.as_ref())
+}
+
+/// [`text`] with what a scan of the grid found (for a grid read in place: else it says
+/// the grid was not scanned).
+pub fn text_scanned(road: &Road, path: &str, scanned: Option<&GridScan>) -> String {
     let h = road.header();
     let g = road.grid();
     let s = road.statistics();
@@ -77,18 +131,12 @@ pub fn text(road: &Road, path: &str) -> String {
             None => "no".into(),
         },
     );
-    match g.in_memory() {
-        Some(values) => {
-            line("elevation", format!("{:.4} .. {:.4} m", s.z_min, s.z_max));
-            line("NaN cells", format!("{}", values.iter().filter(|z| z.is_nan()).count()));
+    match scanned {
+        Some(scan) => {
+            line("elevation", format!("{:.4} .. {:.4} m", scan.z_min, scan.z_max));
+            line("NaN cells", format!("{}", scan.nan_cells));
         }
-        None => line(
-            "grid",
-            format!(
-                "read in place ({} tiles of the file read so far); its range and NaN cells are not scanned",
-                g.tiles_read()
-            ),
-        ),
+        None => line("elevation", "not scanned: the grid is read in place (--scan reads it whole)".into()),
     }
     let o = road.global_origin();
     if o != Default::default() {

@@ -3,11 +3,15 @@
 //! A [`RoadSpec`] describes a road by functions of u (heading, slope, banking) and
 //! of (u, v) (elevation); [`RoadSpec::to_crg`] renders it as a KDBI file and
 //! [`RoadSpec::build`] loads that through the normal reader, so generated roads
-//! take exactly the path files take.
+//! take exactly the path files take; [`RoadSpec::write`] streams it into a binary file
+//! (roads larger than memory).
 
-use crate::base::error::Result;
+use crate::base::error::{Error, Result};
+use crate::model::header::DataFormat;
 use crate::model::road::Road;
 use std::fmt::Write as _;
+use std::io::Write;
+use std::path::Path;
 
 type Fu = Box<dyn Fn(f64) -> f64 + Send + Sync>;
 type Fuv = Box<dyn Fn(f64, f64) -> f64 + Send + Sync>;
@@ -103,6 +107,24 @@ impl RoadSpec {
 
     /// The road as a KDBI file.
     pub fn to_crg(&self) -> Vec<u8> {
+        let mut out = Vec::new();
+        // Writing into memory cannot fail.
+        let _ = self.write_to(&mut out, DataFormat::Kdbi);
+        out
+    }
+
+    /// Writes the road as a binary file (KRBI or KDBI; a text format is written as KDBI),
+    /// record after record: roads of any size, without holding them in memory.
+    pub fn write(&self, path: impl AsRef<Path>, format: DataFormat) -> Result<()> {
+        let path = path.as_ref();
+        let file = std::fs::File::create(path).map_err(|e| Error::writing(path, e))?;
+        let mut out = std::io::BufWriter::with_capacity(1 << 20, file);
+        self.write_to(&mut out, format).and_then(|()| out.flush()).map_err(|e| Error::writing(path, e))
+    }
+
+    /// Writes the road as a binary file to `out` (see [`RoadSpec::write`]).
+    fn write_to(&self, out: &mut impl Write, format: DataFormat) -> std::io::Result<()> {
+        let single = format == DataFormat::Krbi;
         let mut h = String::new();
         let u_end = self.u(self.n_u - 1);
         let nv = self.v.len();
@@ -123,7 +145,7 @@ impl RoadSpec {
         }
         let _ = writeln!(h, "$");
         h.push_str(&self.extra_header);
-        let _ = writeln!(h, "$KD_Definition\n#:KDBI");
+        let _ = writeln!(h, "$KD_Definition\n#:{}", if single { "KRBI" } else { "KDBI" });
         if self.heading.is_some() {
             let _ = writeln!(h, "D:reference line phi,rad");
         }
@@ -141,23 +163,33 @@ impl RoadSpec {
             };
         }
         let _ = writeln!(h, "$\n{}", "$".repeat(80));
-        let mut out = h.into_bytes();
-        let channels = nv + [&self.heading, &self.slope, &self.bank].iter().filter(|c| c.is_some()).count();
-        out.reserve(self.n_u * channels * 8 + 80);
-        let start = out.len();
+        out.write_all(h.as_bytes())?;
+        let mut record = Vec::new();
+        let mut written = 0usize;
+        let put = |record: &mut Vec<u8>, value: f64| {
+            if single {
+                record.extend_from_slice(&(value as f32).to_be_bytes());
+            } else {
+                record.extend_from_slice(&value.to_be_bytes());
+            }
+        };
         for i in 0..self.n_u {
             let u = self.u(i);
+            record.clear();
             for f in [&self.heading, &self.slope, &self.bank].into_iter().flatten() {
-                out.extend_from_slice(&f(u).to_be_bytes());
+                put(&mut record, f(u));
             }
             for &v in &self.v {
-                out.extend_from_slice(&(self.elevation)(u, v).to_be_bytes());
+                put(&mut record, (self.elevation)(u, v));
             }
+            out.write_all(&record)?;
+            written += record.len();
         }
-        while !(out.len() - start).is_multiple_of(80) {
-            out.extend_from_slice(&f64::NAN.to_be_bytes());
+        record.clear();
+        while !(written + record.len()).is_multiple_of(80) {
+            put(&mut record, f64::NAN);
         }
-        out
+        out.write_all(&record)
     }
 
     /// Loads the generated road.

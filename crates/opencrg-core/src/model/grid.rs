@@ -7,7 +7,7 @@ use crate::base::settings::NanMode;
 use crate::model::in_place::{RowWalker, ValueOp};
 use crate::model::nan_borders::fill_row_nans;
 use crate::model::tiles::Tiles;
-use std::ops::Range;
+use std::ops::{Range, RangeInclusive};
 use std::sync::{Arc, OnceLock};
 
 /// How the v positions of the long sections were defined.
@@ -41,6 +41,14 @@ impl InPlace {
     pub(crate) fn new(tiles: Tiles) -> Self {
         InPlace { tiles: Arc::new(tiles), whole: OnceLock::new() }
     }
+}
+
+/// A part of a grid read in place (some cross sections, some long sections), to make a
+/// road of (see [`Grid::part`]): its values are read from the same file where they are
+/// asked for.
+#[derive(Debug)]
+pub struct GridPart {
+    pub(crate) tiles: Tiles,
 }
 
 /// Elevation grid: single-precision z values at (cross section `iu`, long section `iv`).
@@ -221,6 +229,15 @@ impl Grid {
         let fault =
             tiles.fault().or_else(|| tiles.records().faulted().then_some(crate::base::mapped_file::Fault::Cut))?;
         Some(Error::reading(tiles.records().path(), fault.into_io()))
+    }
+
+    /// The cross sections `us` and long sections `vs` of a grid read in place whose values
+    /// are as the file gives them (no modifier has acted on them), as a part a road can be
+    /// made of without reading them; `None` otherwise (or where the ranges leave the grid).
+    pub fn part(&self, us: RangeInclusive<usize>, vs: RangeInclusive<usize>) -> Option<GridPart> {
+        let tiles = self.tiles().filter(|t| t.ops().is_empty())?;
+        let records = tiles.records().part(us, vs)?;
+        Some(GridPart { tiles: Tiles::new(Arc::new(records), Vec::new(), tiles.capacity()) })
     }
 
     /// Tiles a grid read in place has read from its file so far (0 in memory).

@@ -51,6 +51,30 @@ impl Records {
         Some(Records { file, path: path.to_path_buf(), start, len, width, columns, contiguous, nu })
     }
 
+    /// The records `us` (their long sections `vs`, in the order of v) of this file, as
+    /// records of their own: a part of the grid, read from the same file. `None` where
+    /// the ranges leave the grid or hold fewer than two sections.
+    pub(crate) fn part(
+        &self,
+        us: std::ops::RangeInclusive<usize>,
+        vs: std::ops::RangeInclusive<usize>,
+    ) -> Option<Records> {
+        let (a, b, c, e) = (*us.start(), *us.end(), *vs.start(), *vs.end());
+        if !(a < b && b < self.nu && c < e && e < self.nv()) {
+            return None;
+        }
+        Some(Records {
+            file: self.file.clone(),
+            path: self.path.clone(),
+            start: self.start + a * self.len,
+            len: self.len,
+            width: self.width,
+            columns: self.columns[c..=e].into(),
+            contiguous: self.columns[c..=e].windows(2).all(|w| w[1] == w[0] + self.width),
+            nu: b - a + 1,
+        })
+    }
+
     /// Number of long sections.
     pub(crate) fn nv(&self) -> usize {
         self.columns.len()

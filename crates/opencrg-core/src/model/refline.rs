@@ -357,48 +357,67 @@ impl RefLine {
     /// current x/y: the normals at both ends of every segment, scaled so their
     /// component along the segment's own normal is 1 (v is measured along them), and
     /// the curvature at every cross section. The formulas are those evaluation used
-    /// to apply per call, so the answers are bit for bit the same.
+    /// to apply per call, so the answers are bit for bit the same. The arrays are filled
+    /// anew in their own memory (a road prepared again, by modifiers, takes no more).
     pub(crate) fn update_caches(&mut self) {
         let (xs, ys, n) = (&self.x, &self.y, self.n);
-        self.normals = (0..n - 1)
-            .map(|i| {
+        refill(
+            &mut self.normals,
+            (0..n - 1).map(|i| {
                 let (p1, p2) = ((xs[i], ys[i]), (xs[i + 1], ys[i + 1]));
                 let n12 = normalized(-(p2.1 - p1.1), p2.0 - p1.0);
                 let n1 = if i > 0 { normalized(-(p2.1 - ys[i - 1]), p2.0 - xs[i - 1]) } else { n12 };
                 let n2 = if i + 2 < n { normalized(-(ys[i + 2] - p1.1), xs[i + 2] - p1.0) } else { n12 };
                 let (a, b) = (stretch(n1, n12), stretch(n2, n12));
                 [a.0, a.1, b.0, b.1]
-            })
-            .collect();
-        self.seg_len = xs
-            .windows(2)
-            .zip(ys.windows(2))
-            .map(|(x, y)| {
+            }),
+        );
+        refill(
+            &mut self.seg_len,
+            xs.windows(2).zip(ys.windows(2)).map(|(x, y)| {
                 let (dx, dy) = (x[1] - x[0], y[1] - y[0]);
                 (dx * dx + dy * dy).sqrt()
-            })
-            .collect();
-        self.search = (0..n)
-            .map(|i| {
+            }),
+        );
+        refill(
+            &mut self.search,
+            (0..n).map(|i| {
                 let (before, after) = (i.saturating_sub(1), (i + 1).min(n - 1));
                 SearchPoint { x: xs[i], y: ys[i], dx: xs[after] - xs[before], dy: ys[after] - ys[before] }
-            })
-            .collect();
+            }),
+        );
         let k = self.curvature_step();
         self.curv_step = k;
-        self.curvature = (0..n).map(|i| if i >= k && i + k < n { self.curvature_at(i, k) } else { 0.0 }).collect();
+        let mut curvature = std::mem::take(&mut self.curvature);
+        let hd = self.curvature_scale(k);
+        refill(&mut curvature, (0..n).map(|i| if i >= k && i + k < n { self.curvature_at(i, k, hd) } else { 0.0 }));
+        self.curvature = curvature;
     }
 
-    /// Curvature at cross section `i` from the points `i - k`, `i`, `i + k`.
+    /// The factor of [`RefLine::curvature_at`] for points `k` apart (the same for every
+    /// cross section: computed once for all of them).
+    pub(crate) fn curvature_scale(&self, k: usize) -> f64 {
+        1.0 / (self.u_inc * k as f64).powf(3.0)
+    }
+
+    /// Curvature at cross section `i` from the points `i - k`, `i`, `i + k`, with the
+    /// factor `hd` of [`RefLine::curvature_scale`] for `k`.
     #[inline]
-    pub(crate) fn curvature_at(&self, i: usize, k: usize) -> f64 {
-        let hd = 1.0 / (self.u_inc * k as f64).powf(3.0);
+    pub(crate) fn curvature_at(&self, i: usize, k: usize, hd: f64) -> f64 {
         let dx0 = self.x[i] - self.x[i - k];
         let dx1 = self.x[i + k] - self.x[i];
         let dy0 = self.y[i] - self.y[i - k];
         let dy1 = self.y[i + k] - self.y[i];
         (dx0 * dy1 - dy0 * dx1) * hd
     }
+}
+
+/// Replaces the values of `v` by `values`, in the memory `v` holds already where it has
+/// room (a fresh allocation of the same size would leave the old one's memory with the
+/// allocator: a road prepared again would hold its caches twice).
+fn refill<T>(v: &mut Vec<T>, values: impl Iterator<Item = T>) {
+    v.clear();
+    v.extend(values);
 }
 
 /// A reference line point as the x/y search reads it, in one record: the point, and the

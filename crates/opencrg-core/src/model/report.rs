@@ -122,8 +122,9 @@ impl Statistics {
         let n = l.n;
         let heading = |a: usize, b: usize| (l.y[b] - l.y[a]).atan2(l.x[b] - l.x[a]);
         let (mut right, mut left) = (0.0f64, 0.0f64);
+        let hd = l.curvature_scale(1);
         for i in 1..n - 1 {
-            let c = l.curvature_at(i, 1);
+            let c = l.curvature_at(i, 1, hd);
             right = right.min(c);
             left = left.max(c);
         }

@@ -162,7 +162,7 @@ impl Road {
         self.note(Event::ClosedTrack(self.line.closed));
         self.grid.build_v_table();
         self.line.update_caches();
-        self.index = SampleIndex::build(&self.line);
+        self.index = std::mem::take(&mut self.index).rebuilt(&self.line);
         self.prefetch_hint = PrefetchHint::new(self.line.u_inc, &self.grid);
     }
 

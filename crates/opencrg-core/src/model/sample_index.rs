@@ -50,16 +50,24 @@ pub(crate) struct SampleIndex {
 }
 
 impl SampleIndex {
-    /// Builds the index for a reference line.
-    pub(crate) fn build(line: &RefLine) -> Self {
-        let mut nodes: Vec<Node> = sample_indices(line.n)
-            .map(|i| Node { x: line.x[i], y: line.y[i], index: i, y_split: false, bbox: [0.0; 4] })
-            .collect();
+    /// The index for a reference line, built in this index's memory (a road prepared
+    /// again takes no more; a new index starts from `SampleIndex::default()`).
+    pub(crate) fn rebuilt(mut self, line: &RefLine) -> Self {
+        let nodes = &mut self.nodes;
+        nodes.clear();
+        nodes.extend(sample_indices(line.n).map(|i| Node {
+            x: line.x[i],
+            y: line.y[i],
+            index: i,
+            y_split: false,
+            bbox: [0.0; 4],
+        }));
         if nodes.iter().any(|p| p.x.is_nan() || p.y.is_nan()) {
-            return SampleIndex { nodes: Vec::new() };
+            nodes.clear();
+            return self;
         }
-        arrange(&mut nodes);
-        SampleIndex { nodes }
+        arrange(nodes);
+        self
     }
 
     /// The sample nearest to (x, y); ties go to the lowest index.
@@ -195,7 +203,7 @@ mod tests {
         for spec in roads {
             let road = spec.build().expect("a valid road");
             let line = road.reference_line();
-            let index = SampleIndex::build(line);
+            let index = SampleIndex::default().rebuilt(line);
             let (x0, x1) = line.x.iter().fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
             let (y0, y1) = line.y.iter().fold((f64::MAX, f64::MIN), |(a, b), &y| (a.min(y), b.max(y)));
             let mut points: Vec<(f64, f64)> = (0..3000)

@@ -4,7 +4,7 @@
 
 use crate::base::error::Result;
 use crate::model::georef::GlobalOrigin;
-use crate::model::grid::{bank_v, VLayout};
+use crate::model::grid::{bank_v, Grid, GridPart, InPlace, Store, VLayout};
 use crate::model::header::{Channel, EndsGiven, Header, RoadParams};
 use crate::model::road::{LoadOptions, Road};
 use crate::read::build::LineValues;
@@ -214,14 +214,51 @@ impl Draft {
     /// [-pi, pi] (a full turn less or more changes nothing but the number); its banking
     /// acts over the long sections' range.
     pub fn into_road(mut self, what: &str) -> Result<Road> {
+        if !self.z.is_empty() {
+            self.bank_over_sections();
+        }
+        let z = Store::Memory(std::mem::take(&mut self.z));
+        self.finish(what, z)
+    }
+
+    /// [`Draft::into_road`] with `grid` as its elevations (the draft's `z` left empty):
+    /// the road reads them where they are asked for, from the file they lie in. (Where
+    /// the banking must be shifted onto the draft's long sections, they are read first.)
+    pub fn into_road_over(mut self, what: &str, grid: GridPart) -> Result<Road> {
+        let sections = (self.v[0], self.v[self.nv() - 1]);
+        if self.bank.is_some() && self.bank_v != sections {
+            let part = Grid { store: Store::InPlace(InPlace::new(grid.tiles)), ..self.part_frame() };
+            self.z = part.copied_values();
+            return self.into_road(what);
+        }
+        self.finish(what, Store::InPlace(InPlace::new(grid.tiles)))
+    }
+
+    /// A grid of this draft's size to read a part through (its values come with the part).
+    fn part_frame(&self) -> Grid {
+        let nv = self.nv();
+        Grid {
+            nu: self.nu(),
+            nv,
+            store: Store::Memory(Vec::new()),
+            mean: 0.0,
+            v: self.v.clone(),
+            v_first: self.v[0],
+            v_last: self.v[nv - 1],
+            v_inc: 0.0,
+            layout: VLayout::Explicit,
+            v_table: Vec::new(),
+            last_frac: nv.saturating_sub(1) as f64,
+        }
+    }
+
+    /// The road of this draft with its elevations `z`.
+    fn finish(mut self, what: &str, z: Store) -> Result<Road> {
         if self.phi.len() > 1 {
             self.phi[0] = self.phi[1];
         }
         for p in &mut self.phi {
             *p -= (*p / TAU).round() * TAU;
-        }
-        if !self.z.is_empty() {
-            self.bank_over_sections();
         }
         let nu = self.nu();
         let nv = self.nv();
@@ -263,6 +300,6 @@ impl Draft {
         header.channels = channels;
         header.top_file_numbers_sections = self.regular;
         let line = LineValues { phi: self.phi, slope: self.slope, bank: self.bank };
-        Road::assemble(header, line, self.z, self.load)
+        Road::assemble(header, line, z, self.load)
     }
 }

@@ -35,8 +35,9 @@ impl Road {
     fn curvature_fits_width(&self) -> bool {
         let l = &self.line;
         let (mut cmin, mut cmax) = (0.0f64, 0.0f64);
+        let hd = l.curvature_scale(1);
         for i in 1..l.n - 1 {
-            let c = l.curvature_at(i, 1);
+            let c = l.curvature_at(i, 1, hd);
             if c < cmin {
                 cmin = c;
             }

@@ -4,7 +4,6 @@
 use crate::base::settings::{m, NanMode, Settings};
 use crate::model::grid::VLayout;
 use crate::model::road::Road;
-use crate::model::sample_index::SampleIndex;
 use crate::query::eval::{self, EvalOptions};
 
 impl Road {
@@ -200,7 +199,7 @@ impl Road {
             self.grid.mean += dz;
         }
         self.line.update_caches();
-        self.index = SampleIndex::build(&self.line);
+        self.index = std::mem::take(&mut self.index).rebuilt(&self.line);
     }
 }
 

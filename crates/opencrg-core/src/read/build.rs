@@ -107,14 +107,13 @@ impl Road {
     /// with that header: `line` holds the reference line channels the header's `D:`
     /// lines name (heading, slope, banking; one value per cross section), `z` the
     /// elevations long section by long section. The way new roads are made from old ones.
-    pub(crate) fn assemble(header: Header, line: LineValues, z: Vec<f32>, load: LoadOptions) -> Result<Road> {
-        let z = Store::Memory(z);
+    pub(crate) fn assemble(header: Header, line: LineValues, z: Store, load: LoadOptions) -> Result<Road> {
         let path = header.path.clone();
         let err = |field: &str, msg: String| Error::format(&path, Location::File, field, msg);
         let (cols, sections) = channel_layout(&header, &err)?;
         let (u_first, u_inc) = u_axis(&header.road, &err)?;
         let nv = sections.v.len();
-        let len = z_len(&z);
+        let len = z_len(&z, nv);
         let nu = len / nv;
         if nu < 2 || nu * nv != len || line.phi.len() != nu {
             return Err(err("data section", format!("{len} values do not make {nv} long sections")));
@@ -199,10 +198,11 @@ pub(crate) struct LineValues {
     pub bank: Option<Vec<f64>>,
 }
 
-/// The number of values a grid in memory holds.
-fn z_len(z: &Store) -> usize {
+/// The number of values a grid holds (in memory, or records of `nv` read in place).
+fn z_len(z: &Store, nv: usize) -> usize {
     match z {
         Store::Memory(z) => z.len(),
+        Store::InPlace(p) if p.tiles.records().nv() == nv => p.tiles.records().nu() * nv,
         Store::InPlace(_) => 0,
     }
 }

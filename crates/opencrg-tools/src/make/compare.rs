@@ -1,8 +1,10 @@
 //! How far two roads' surfaces are apart.
 
-use super::nodes::{at_nodes, Progress, SurfaceProbe};
+use super::nodes::{rows_of_nodes, Node, Progress, SurfaceProbe};
+use opencrg_core::budget::filled;
 use opencrg_core::Result;
 use opencrg_core::Road;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
 
 /// The differences between two surfaces at the grid nodes of the first.
@@ -25,52 +27,60 @@ pub struct Comparison {
 
 /// The second surface against the first at the first's grid nodes: each node's z on
 /// the first road and the second's z at the same x/y, both as the library evaluates
-/// them (the second found by its own x/y search). Refused: memory the system does not
-/// give for the first road's nodes.
+/// them (the second found by its own x/y search). The first road's cross sections are
+/// taken a block at a time (a road larger than memory streams through; a road read in
+/// place reads only the nodes' cells of the second).
 pub fn compare(first: &Arc<Road>, second: &Arc<Road>, progress: Progress) -> Result<Comparison> {
     let v = first.grid().v.clone();
+    let nu = first.reference_line().n;
     let probes = || (opencrg_core::ContactPoint::new(first.clone()), SurfaceProbe::new(second));
     // Each node's difference; +inf where only the first has a value, NaN where it has none.
-    let diff = at_nodes(
-        first,
-        &v,
-        probes,
-        |(a, b), node| {
-            let Ok(za) = a.uv_to_z(node.u, node.v) else { return f32::NAN };
-            if za.is_nan() {
-                return f32::NAN;
-            }
-            match b.at(node.x, node.y) {
-                Some((zb, _, _)) if !zb.is_nan() => (zb - za) as f32,
-                _ => f32::INFINITY,
-            }
-        },
-        progress,
-    )?;
-    let nu = first.reference_line().n;
+    let difference = |(a, b): &mut (opencrg_core::ContactPoint, SurfaceProbe), node: Node| {
+        let Ok(za) = a.uv_to_z(node.u, node.v) else { return f32::NAN };
+        if za.is_nan() {
+            return f32::NAN;
+        }
+        match b.at(node.x, node.y) {
+            Some((zb, _, _)) if !zb.is_nan() => (zb - za) as f32,
+            _ => f32::INFINITY,
+        }
+    };
     let mut c =
         Comparison { compared: 0, only_first: 0, max_difference: 0.0, at: [f64::NAN; 4], signed: 0.0, rms: 0.0 };
     let mut worst = None;
     let mut sum2 = 0.0;
-    for (k, &d) in diff.iter().enumerate() {
-        if d.is_nan() {
-            continue;
-        }
-        if d.is_infinite() {
-            c.only_first += 1;
-            continue;
-        }
-        c.compared += 1;
-        let d = f64::from(d);
-        sum2 += d * d;
-        if d.abs() > c.max_difference || worst.is_none() {
-            c.max_difference = d.abs();
-            c.signed = d;
-            worst = Some(k);
+    let rows = (BLOCK_NODES / v.len().max(1)).max(64);
+    let mut block = filled(rows * v.len(), f32::NAN, "a block of the first road's nodes")?;
+    let done = AtomicUsize::new(0);
+    for start in (0..nu).step_by(rows) {
+        let count = rows.min(nu - start);
+        let block = &mut block[..count * v.len()];
+        rows_of_nodes(first, start, &v, &probes, &difference, block, &|k| {
+            progress("comparing", done.fetch_add(k, Ordering::Relaxed) as u64 + k as u64, nu as u64)
+        });
+        for (k, &d) in block.iter().enumerate() {
+            if d.is_nan() {
+                continue;
+            }
+            if d.is_infinite() {
+                c.only_first += 1;
+                continue;
+            }
+            c.compared += 1;
+            let d = f64::from(d);
+            sum2 += d * d;
+            // The largest difference, of equal ones the first long section by long section.
+            let (iu, iv) = (start + k / v.len(), k % v.len());
+            let earlier = worst.is_none_or(|(wu, wv)| (iv, iu) < (wv, wu));
+            if d.abs() > c.max_difference || worst.is_none() || (d.abs() == c.max_difference && earlier) {
+                c.max_difference = d.abs();
+                c.signed = d;
+                worst = Some((iu, iv));
+            }
         }
     }
-    if let Some(k) = worst {
-        let (iu, iv) = (k % nu, k / nu);
+    progress("comparing", nu as u64, nu as u64);
+    if let Some((iu, iv)) = worst {
         let u = first.reference_line().u_at(iu);
         let (x, y) = opencrg_core::ContactPoint::new(first.clone()).uv_to_xy(u, v[iv]).unwrap_or((f64::NAN, f64::NAN));
         c.at = [u, v[iv], x, y];
@@ -78,3 +88,6 @@ pub fn compare(first: &Arc<Road>, second: &Arc<Road>, progress: Progress) -> Res
     }
     Ok(c)
 }
+
+/// How many nodes of the first road are compared at a time.
+const BLOCK_NODES: usize = 1 << 22;

@@ -28,7 +28,43 @@ pub fn cut(road: &Road, u: (f64, f64), v: Option<(f64, f64)>) -> Result<Road> {
         Metres(d.v[c]),
         Metres(d.v[e])
     );
-    slice(d, road.grid().values(), a..=b, c..=e).into_road(&what)
+    let (us, vs) = (a..=b, c..=e);
+    // A grid read in place as its file gives it: the part is read from the file where it
+    // is asked for (written out, it streams through); else its values are copied.
+    match road.grid().part(us.clone(), vs.clone()) {
+        Some(part) => slice(d, Vec::new(), us, vs).into_road_over(&what, part),
+        None => {
+            let values = part_values(road.grid(), us.clone(), vs.clone())?;
+            slice(d, values, us, vs).into_road(&what)
+        }
+    }
+}
+
+/// The values of the cross sections `us` and long sections `vs` of `grid`, long section by
+/// long section: from memory, or only those cross sections read from the file of a grid
+/// read in place.
+fn part_values(
+    grid: &opencrg_core::grid::Grid,
+    us: std::ops::RangeInclusive<usize>,
+    vs: std::ops::RangeInclusive<usize>,
+) -> Result<Vec<f32>> {
+    let (a, b, nu) = (*us.start(), *us.end(), grid.nu);
+    let len = b - a + 1;
+    if let Some(values) = grid.in_memory() {
+        let mut part = Vec::with_capacity(len * vs.clone().count());
+        for iv in vs {
+            part.extend_from_slice(&values[iv * nu + a..=iv * nu + b]);
+        }
+        return Ok(part);
+    }
+    let mut part = vec![0.0f32; len * vs.clone().count()];
+    grid.rows(a..b + 1, |iu, row| {
+        for (k, iv) in vs.clone().enumerate() {
+            part[k * len + iu - a] = row[iv];
+        }
+        Ok::<(), Error>(())
+    })?;
+    Ok(part)
 }
 
 /// The first and last of `n` nodes (positions `at(i)`, increasing) within `range`, when
@@ -52,17 +88,14 @@ fn outside(axis: &str, asked: (f64, f64), road: (f64, f64)) -> Error {
     ))
 }
 
-/// The draft's cross sections `us` and long sections `vs` of `grid` (its elevations), the
-/// line starting at the first of them where it was.
-fn slice(d: Draft, grid: &[f32], us: std::ops::RangeInclusive<usize>, vs: std::ops::RangeInclusive<usize>) -> Draft {
+/// The draft's cross sections `us` and long sections `vs` with `part` as their elevations
+/// (long section by long section; empty for a grid part the road reads itself), the line
+/// starting at the first of them where it was.
+fn slice(d: Draft, part: Vec<f32>, us: std::ops::RangeInclusive<usize>, vs: std::ops::RangeInclusive<usize>) -> Draft {
     let (x, y) = d.line_xy();
     let z = d.line_z();
     let (a, b) = (*us.start(), *us.end());
     let nu = d.nu();
-    let mut part = Vec::with_capacity((b - a + 1) * vs.clone().count());
-    for iv in vs.clone() {
-        part.extend_from_slice(&grid[iv * nu + a..=iv * nu + b]);
-    }
     let moved = a != 0 || b != nu - 1;
     Draft {
         u_first: d.u_first + a as f64 * d.u_inc,

@@ -35,32 +35,12 @@ pub(crate) fn at_nodes<S>(
     value: impl Fn(&mut S, Node) -> f32 + Sync,
     progress: Progress,
 ) -> Result<Vec<f32>> {
-    let line = frame.reference_line();
-    let (nu, nv) = (line.n, v.len());
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(nu.div_ceil(64)).max(1);
-    let rows_per = nu.div_ceil(threads);
+    let (nu, nv) = (frame.reference_line().n, v.len());
     // Cross section by cross section first (each thread fills whole rows), turned after.
     let mut by_row = filled(nu * nv, f32::NAN, "the values at the new road's nodes")?;
     let done = AtomicUsize::new(0);
-    std::thread::scope(|scope| {
-        for (chunk, rows) in by_row.chunks_mut(rows_per * nv).enumerate() {
-            let (state, value, done) = (&state, &value, &done);
-            scope.spawn(move || {
-                let cp = ContactPoint::new(frame.clone());
-                let mut s = state();
-                for (k, row) in rows.chunks_mut(nv).enumerate() {
-                    let iu = chunk * rows_per + k;
-                    let u = line.u_at(iu);
-                    for (iv, out) in row.iter_mut().enumerate() {
-                        let Ok((x, y)) = cp.uv_to_xy(u, v[iv]) else { continue };
-                        *out = value(&mut s, Node { iu, u, v: v[iv], x, y });
-                    }
-                    if k % 64 == 63 {
-                        progress("evaluating", done.fetch_add(64, Ordering::Relaxed) as u64 + 64, nu as u64);
-                    }
-                }
-            });
-        }
+    rows_of_nodes(frame, 0, v, &state, &value, &mut by_row, &|k| {
+        progress("evaluating", done.fetch_add(k, Ordering::Relaxed) as u64 + k as u64, nu as u64)
     });
     progress("evaluating", nu as u64, nu as u64);
     let mut out = filled(nu * nv, 0.0f32, "the new road's grid")?;
@@ -70,6 +50,48 @@ pub(crate) fn at_nodes<S>(
         }
     }
     Ok(out)
+}
+
+/// `value(state, node)` at every node of `frame`'s cross sections from `first` on and of
+/// the long sections at `v`, into `out` cross section by cross section (`[k * nv + iv]`
+/// for cross section `first + k`; as many as `out` holds; NaN where a node has no x/y),
+/// on all cores, each thread with its own `state()`; `done(k)` told of every 64 cross
+/// sections finished.
+pub(crate) fn rows_of_nodes<S>(
+    frame: &Arc<Road>,
+    first: usize,
+    v: &[f64],
+    state: &(impl Fn() -> S + Sync),
+    value: &(impl Fn(&mut S, Node) -> f32 + Sync),
+    out: &mut [f32],
+    done: &(dyn Fn(usize) + Sync),
+) {
+    let line = frame.reference_line();
+    let nv = v.len().max(1);
+    let rows = out.len() / nv;
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(rows.div_ceil(64)).max(1);
+    let rows_per = rows.div_ceil(threads).max(1);
+    std::thread::scope(|scope| {
+        for (chunk, part) in out.chunks_mut(rows_per * nv).enumerate() {
+            scope.spawn(move || {
+                let cp = ContactPoint::new(frame.clone());
+                let mut s = state();
+                for (k, row) in part.chunks_mut(nv).enumerate() {
+                    let iu = first + chunk * rows_per + k;
+                    let u = line.u_at(iu);
+                    for (iv, out) in row.iter_mut().enumerate() {
+                        *out = match cp.uv_to_xy(u, v[iv]) {
+                            Ok((x, y)) => value(&mut s, Node { iu, u, v: v[iv], x, y }),
+                            Err(_) => f32::NAN,
+                        };
+                    }
+                    if k % 64 == 63 {
+                        done(64);
+                    }
+                }
+            });
+        }
+    });
 }
 
 /// A contact point that reads the surface of `road` at x/y, or says there is none: the
