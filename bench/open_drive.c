@@ -77,7 +77,7 @@ int main(int argc, char **argv)
             sink += z;
         }
     double driven = now() - t0;
-    printf("open %.3f drive %.3f calls %ld rss_anon %ld rss_file %ld hwm %ld sink %.6f\n", opened, driven, calls,
+    printf("open %.3f drive %.3f calls %ld rss_anon %ld rss_file %ld hwm %ld sink %.17g\n", opened, driven, calls,
            status_kib("RssAnon"), status_kib("RssFile"), status_kib("VmHWM"), sink);
     path_free(&p);
     return 0;

@@ -5,10 +5,10 @@
 //! 65 MB of grid; curve radii down to about 125 m). Roads already there are kept; names
 //! after the folder (without `.crg`) make only those.
 //!
-//! Two roads larger than most memories are made only when named (streamed to the file,
-//! never held in memory): `winding_10km_4gb_krbi`, 10 km x 10 m at 1 cm (4.0 GB), and
-//! `proving_ground_16gb_krbi`, 10 km x 40 m at 1 cm (16.0 GB), both with heading, slope
-//! and banking channels.
+//! Roads of gigabytes are made only when named (streamed to the file, never held in
+//! memory): `winding_5km_2gb_krbi`, 5 km x 10 m at 1 cm (2.0 GB, the test run's),
+//! `winding_10km_4gb_krbi`, 10 km x 10 m (4.0 GB), and `proving_ground_16gb_krbi`, 10 km x
+//! 40 m (16.0 GB), all at 1 cm with heading, slope and banking channels.
 //!
 //!     cargo run --release -p opencrg-core --example make_bench_roads -- target/bench-roads [NAME ...]
 
@@ -24,11 +24,12 @@ enum Make {
 
 /// The benchmark roads: file name (without `.crg`), format, how to make the road, and
 /// whether it is made without being named.
-const ROADS: [(&str, DataFormat, Make, bool); 6] = [
+const ROADS: [(&str, DataFormat, Make, bool); 7] = [
     ("track_500m_krbi", DataFormat::Krbi, Make::Road(track), true),
     ("track_500m_lrfi", DataFormat::Lrfi, Make::Road(track), true),
     ("winding_10km_krbi", DataFormat::Krbi, Make::Road(winding), true),
     ("winding_sloped_banked_2km_krbi", DataFormat::Krbi, Make::Road(hilly), true),
+    ("winding_5km_2gb_krbi", DataFormat::Krbi, Make::Streamed(big_2gb), false),
     ("winding_10km_4gb_krbi", DataFormat::Krbi, Make::Streamed(big_4gb), false),
     ("proving_ground_16gb_krbi", DataFormat::Krbi, Make::Streamed(big_16gb), false),
 ];
@@ -58,21 +59,26 @@ fn hilly() -> opencrg_core::Result<Road> {
         .build()
 }
 
-/// A long road of `width` metres at 1 cm both ways, winding, sloped and banked.
-fn big(width: f64) -> RoadSpec {
-    RoadSpec::straight(10_000.0, width, 0.01, 0.01)
+/// A road `length` metres long and `width` wide at 1 cm both ways, winding, sloped and
+/// banked.
+fn big(length: f64, width: f64) -> RoadSpec {
+    RoadSpec::straight(length, width, 0.01, 0.01)
         .with_heading(|u| 3.0 * (u / 400.0).sin() + u / 2000.0)
         .with_slope(|u| 0.04 * (u / 150.0).sin())
         .with_bank(|u| 0.03 * (u / 90.0 + 1.0).sin())
         .with_elevation(surface)
 }
 
+fn big_2gb() -> RoadSpec {
+    big(5_000.0, 10.0)
+}
+
 fn big_4gb() -> RoadSpec {
-    big(10.0)
+    big(10_000.0, 10.0)
 }
 
 fn big_16gb() -> RoadSpec {
-    big(40.0)
+    big(10_000.0, 40.0)
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

@@ -233,12 +233,24 @@ pub unsafe extern "C" fn crgDataSetGetGridZ(dataSetId: c_int, z: *mut f32, nU: c
         }
         // SAFETY: `nU * nV` floats behind `z` (the contract).
         let Some(out) = (unsafe { output(z, g.nu * g.nv) }) else { return 0 };
-        for (iv, long) in (0..g.nv).map(|iv| (iv, g.long_section(iv))) {
-            for (cross, &value) in out.chunks_exact_mut(g.nv).zip(long) {
-                cross[iv] = if g.mean == 0.0 { value } else { (f64::from(value) + g.mean) as f32 };
+        // Cross section by cross section, as the output holds them (a grid read in place
+        // streams through from its file).
+        let mut cross = out.chunks_exact_mut(g.nv);
+        let read = g.rows(0..g.nu, |_, row| {
+            if let Some(cross) = cross.next() {
+                for (out, &value) in cross.iter_mut().zip(row) {
+                    *out = if g.mean == 0.0 { value } else { (f64::from(value) + g.mean) as f32 };
+                }
+            }
+            Ok::<(), opencrg_core::Error>(())
+        });
+        match read {
+            Ok(()) => 1,
+            Err(e) => {
+                call.warn(&format!("{}: {e}", call.name()));
+                0
             }
         }
-        1
     }))
 }
 

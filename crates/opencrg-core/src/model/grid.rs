@@ -289,24 +289,27 @@ impl Grid {
     }
 
     /// Every value, long section after long section (`iv * nu + iu`). A grid read in
-    /// place is read whole into memory the first time (NaN where it cannot be read):
-    /// prefer [`Grid::rows`] for it.
+    /// place is read whole into memory the first time (NaN where it cannot be read), and
+    /// kept: prefer [`Grid::rows`] for it.
     pub fn values(&self) -> &[f32] {
         match &self.store {
             Store::Memory(z) => z,
-            Store::InPlace(p) => p.whole.get_or_init(|| {
-                let mut values = GridValues::new(self.nv, self.nu);
-                let read = self.rows(0..self.nu, |_, row| {
-                    values.push(row.iter().copied());
-                    Ok::<(), Error>(())
-                });
-                let (mut z, _) = values.finish();
-                if read.is_err() {
-                    z.fill(f32::NAN);
-                }
-                z
-            }),
+            Store::InPlace(p) => p.whole.get_or_init(|| self.read_whole()),
         }
+    }
+
+    /// Every value of a grid read in place, read from its file (NaN where it cannot be).
+    fn read_whole(&self) -> Vec<f32> {
+        let mut values = GridValues::new(self.nv, self.nu);
+        let read = self.rows(0..self.nu, |_, row| {
+            values.push(row.iter().copied());
+            Ok::<(), Error>(())
+        });
+        let (mut z, _) = values.finish();
+        if read.is_err() {
+            z.fill(f32::NAN);
+        }
+        z
     }
 
     /// A copy of every value, long section after long section (`iv * nu + iu`); a grid
@@ -314,7 +317,9 @@ impl Grid {
     pub(crate) fn copied_values(&self) -> Vec<f32> {
         match &self.store {
             Store::Memory(z) => crate::base::memory::large_copy(z),
-            Store::InPlace(_) => self.values().to_vec(),
+            Store::InPlace(p) => {
+                p.whole.get().map_or_else(|| self.read_whole(), |z| crate::base::memory::large_copy(z))
+            }
         }
     }
 

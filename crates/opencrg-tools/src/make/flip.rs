@@ -10,7 +10,9 @@ use std::f64::consts::PI;
 /// surface stays at the same place. u starts where the road's started.
 pub fn flip(road: &Road) -> Result<Road> {
     let what = format!("flipped by opencrg {}: driven the other way", env!("CARGO_PKG_VERSION"));
-    flipped(Draft::line_of(road), road.grid().values()).into_road(&what)
+    let mut d = Draft::of(road);
+    let grid = std::mem::take(&mut d.z);
+    flipped(d, &grid).into_road(&what)
 }
 
 /// The draft, whose elevations are `grid`, driven the other way.
