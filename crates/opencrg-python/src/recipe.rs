@@ -2,14 +2,16 @@
 //! that unpickling makes the same road again (the same steps on the same data give the
 //! same numbers).
 //!
-//! A road read from a file carries the file's path, size and modification time: the file
-//! is read again where the road is unpickled (another process on the same machine, or a
-//! worker sharing the file system), and a file that changed meanwhile is refused. A road
-//! made from bytes carries the bytes.
+//! A road read from a file carries the file's path, size and modification time, and how it
+//! was read (in place or into memory, the tile cache): the file is read again, the same
+//! way, where the road is unpickled (another process on the same machine, or a worker
+//! sharing the file system), and a file that changed meanwhile is refused. A road read in
+//! place thus pickles as a few hundred bytes, whatever its size. A road made from bytes
+//! carries the bytes.
 
 use ::opencrg_core as crg;
 use ::opencrg_core::settings::Value;
-use ::opencrg_core::{Compat, LoadOptions};
+use ::opencrg_core::{Compat, LoadOptions, ReadInPlace};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyTuple};
 use std::path::{Path, PathBuf};
@@ -56,11 +58,12 @@ impl Step {
     }
 }
 
-/// Where a road came from, its behaviour profile and the changes made to it.
+/// Where a road came from, how it was read (its behaviour profile; for a file, in place or
+/// not and the tile cache) and the changes made to it.
 #[derive(Clone)]
 pub(crate) struct Recipe {
     origin: Origin,
-    compat: Compat,
+    load: LoadOptions,
     steps: Vec<Step>,
 }
 
@@ -72,22 +75,29 @@ fn stamp(path: &Path) -> std::io::Result<(u64, u128)> {
 }
 
 impl Recipe {
-    /// A road read from `path`: its absolute path and stamp (taken after the read).
-    pub(crate) fn file(path: &Path, compat: Compat) -> Self {
+    /// A road read from `path` with `load`: its absolute path and stamp (taken after the
+    /// read), and whether it was read in place (it is read so again).
+    pub(crate) fn file(path: &Path, load: LoadOptions, in_place: bool) -> Self {
         let path = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
         let (len, modified) = stamp(&path).unwrap_or((0, 0));
-        Recipe { origin: Origin::File { path, len, modified }, compat, steps: Vec::new() }
+        let in_place = if in_place { ReadInPlace::Always } else { ReadInPlace::Never };
+        Recipe {
+            origin: Origin::File { path, len, modified },
+            load: LoadOptions { in_place, ..load },
+            steps: Vec::new(),
+        }
     }
 
     /// A road made from `data` named `name`.
     pub(crate) fn bytes(data: Arc<Vec<u8>>, name: &str, compat: Compat) -> Self {
-        Recipe { origin: Origin::Bytes { data, name: name.to_string() }, compat, steps: Vec::new() }
+        let load = LoadOptions { compat, ..LoadOptions::default() };
+        Recipe { origin: Origin::Bytes { data, name: name.to_string() }, load, steps: Vec::new() }
     }
 
     /// A road a tool made.
     pub(crate) fn made(road: Arc<crg::Road>) -> Self {
-        let compat = road.compat();
-        Recipe { origin: Origin::Made(road), compat, steps: Vec::new() }
+        let load = LoadOptions { compat: road.compat(), ..LoadOptions::default() };
+        Recipe { origin: Origin::Made(road), load, steps: Vec::new() }
     }
 
     /// Notes a change.
@@ -95,9 +105,11 @@ impl Recipe {
         self.steps.push(step);
     }
 
-    /// The recipe as Python values: `(1, origin, compat, steps)`, where origin is
-    /// `("file", path, size, mtime_ns)` or `("bytes", data, name)`, and each step a tuple
-    /// `("check",)`, `("apply",)`, `("set", id, value)`, `("remove", id)` or `("clear",)`.
+    /// The recipe as Python values: `(2, origin, compat, steps, in_place, cache)`, where
+    /// origin is `("file", path, size, mtime_ns)` or `("bytes", data, name)`, each step a
+    /// tuple `("check",)`, `("apply",)`, `("set", id, value)`, `("remove", id)` or
+    /// `("clear",)`, `in_place` is `"always"`, `"never"` or `"auto"`, and `cache` the tile
+    /// cache's bytes or `None`. (Version 1, without the last two, is read too.)
     pub(crate) fn to_py<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
         let origin = match &self.origin {
             Origin::File { path, len, modified } => {
@@ -127,19 +139,40 @@ impl Recipe {
                 })
             })
             .collect::<PyResult<Vec<_>>>()?;
-        (1u32, origin, self.compat.to_string(), steps).into_pyobject(py)
+        let in_place = match self.load.in_place {
+            ReadInPlace::Always => "always",
+            ReadInPlace::Never => "never",
+            _ => "auto",
+        };
+        (2u32, origin, self.load.compat.to_string(), steps, in_place, self.load.tile_cache).into_pyobject(py)
     }
 
     /// The recipe from what [`Recipe::to_py`] gave.
     pub(crate) fn from_py(state: &Bound<'_, PyAny>) -> PyResult<Self> {
         let bad = |what: &str| crate::errors::request_error(format!("not a pickled opencrg.Road: {what}"));
-        let (version, origin, compat, steps): (u32, Bound<'_, PyAny>, String, Vec<Bound<'_, PyAny>>) =
-            state.extract().map_err(|_| bad("its state"))?;
-        if version != 1 {
-            return Err(bad(&format!("state version {version}")));
-        }
+        let version: u32 = state.get_item(0).and_then(|v| v.extract()).map_err(|_| bad("its state"))?;
+        let (origin, compat, steps, in_place, tile_cache): (
+            Bound<'_, PyAny>,
+            String,
+            Vec<Bound<'_, PyAny>>,
+            String,
+            Option<u64>,
+        ) = match version {
+            1 => {
+                let (_, origin, compat, steps): (u32, _, _, _) = state.extract().map_err(|_| bad("its state"))?;
+                (origin, compat, steps, "auto".into(), None)
+            }
+            2 => {
+                let (_, origin, compat, steps, in_place, cache): (u32, _, _, _, _, _) =
+                    state.extract().map_err(|_| bad("its state"))?;
+                (origin, compat, steps, in_place, cache)
+            }
+            other => return Err(bad(&format!("state version {other}"))),
+        };
         let compat: Compat =
             compat.parse().map_err(|e: crg::UnknownCompat| crate::errors::request_error(e.to_string()))?;
+        let in_place = ReadInPlace::parse(&in_place).map_err(|e| bad(&e))?;
+        let load = LoadOptions { compat, in_place, tile_cache, ..LoadOptions::default() };
         let kind: String = origin.get_item(0)?.extract()?;
         let origin = match kind.as_str() {
             "file" => {
@@ -176,13 +209,13 @@ impl Recipe {
                 })
             })
             .collect::<PyResult<Vec<_>>>()?;
-        Ok(Recipe { origin, compat, steps })
+        Ok(Recipe { origin, load, steps })
     }
 
     /// Makes the road again: reads the data (refusing a file that changed since), then
     /// takes the same steps.
     pub(crate) fn make(&self, py: Python<'_>) -> PyResult<crg::Road> {
-        let options = LoadOptions { compat: self.compat, ..LoadOptions::default() };
+        let options = self.load;
         if let Origin::File { path, len, modified } = &self.origin {
             if stamp(path)? != (*len, *modified) {
                 return Err(crate::errors::request_error(format!(

@@ -7,7 +7,7 @@ use crate::names;
 use crate::recipe::{Recipe, Step};
 use ::opencrg_core as crg;
 use ::opencrg_core::settings::Family;
-use ::opencrg_core::{Compat, DataFormat, LoadOptions};
+use ::opencrg_core::{Compat, DataFormat, LoadOptions, ReadInPlace};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
@@ -22,6 +22,31 @@ fn compat(given: Option<&str>) -> PyResult<Compat> {
         None => std::env::var("OPENCRG_COMPAT").unwrap_or_default(),
     };
     text.parse().map_err(|e: crg::UnknownCompat| crate::errors::request_error(e.to_string()))
+}
+
+/// When a binary road is read in place: `None` as `OPENCRG_IN_PLACE` says (else from
+/// 1 GiB on), `True` always, `False` never, or a size such as `"256M"` (or bytes) from
+/// which on.
+fn in_place(given: Option<&Bound<'_, PyAny>>) -> PyResult<ReadInPlace> {
+    let Some(given) = given.filter(|g| !g.is_none()) else { return Ok(ReadInPlace::Auto) };
+    if let Ok(always) = given.extract::<bool>() {
+        return Ok(if always { ReadInPlace::Always } else { ReadInPlace::Never });
+    }
+    if let Ok(bytes) = given.extract::<u64>() {
+        return Ok(ReadInPlace::From(bytes));
+    }
+    let text: String = given.extract().map_err(|_| errors::request_error("in_place: True, False, None or a size"))?;
+    ReadInPlace::parse(&text).map_err(|e| errors::request_error(format!("in_place={e}")))
+}
+
+/// The tile cache of a road read in place: bytes, or a size such as `"256M"`.
+fn cache(given: Option<&Bound<'_, PyAny>>) -> PyResult<Option<u64>> {
+    let Some(given) = given.filter(|g| !g.is_none()) else { return Ok(None) };
+    if let Ok(bytes) = given.extract::<u64>() {
+        return Ok(Some(bytes));
+    }
+    let text: String = given.extract().map_err(|_| errors::request_error("cache: bytes or a size such as \"256M\""))?;
+    crg::parse_bytes(&text).map(Some).map_err(|e| errors::request_error(format!("cache={e}")))
 }
 
 /// `ReferenceLine(u, x, y, phi, z)`, a named tuple made once.
@@ -139,11 +164,29 @@ fn frozen<'py, T: numpy::Element + Copy>(py: Python<'py>, values: &[T]) -> PyRes
 #[pymethods]
 impl Road {
     #[new]
-    #[pyo3(signature = (path, *, compat = None))]
-    fn new(py: Python<'_>, path: PathBuf, compat: Option<&str>) -> PyResult<Self> {
-        let options = LoadOptions { compat: self::compat(compat)?, ..LoadOptions::default() };
+    #[pyo3(signature = (path, *, compat = None, in_place = None, cache = None))]
+    fn new(
+        py: Python<'_>,
+        path: PathBuf,
+        compat: Option<&str>,
+        in_place: Option<&Bound<'_, PyAny>>,
+        cache: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        let options = LoadOptions {
+            compat: self::compat(compat)?,
+            in_place: self::in_place(in_place)?,
+            tile_cache: self::cache(cache)?,
+            ..LoadOptions::default()
+        };
         let road = py.detach(|| crg::Road::load_with(&path, options)).map_err(errors::to_py)?;
-        Ok(Road::from_core(road, Recipe::file(&path, options.compat)))
+        let recipe = Recipe::file(&path, options, road.grid().is_in_place());
+        Ok(Road::from_core(road, recipe))
+    }
+
+    /// Whether the road's grid is read in place from its file (else it is in memory).
+    #[getter]
+    fn in_place(&self) -> bool {
+        self.inner.grid().is_in_place()
     }
 
     /// A road from the bytes of a CRG file; `name` stands for the file in messages and

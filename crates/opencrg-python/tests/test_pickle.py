@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 import opencrg
-from conftest import REPO, same_bits
+from conftest import REPO, same_bits, write_krbi
 
 sys.path.insert(0, str(REPO / "examples"))
 import python_parallel  # noqa: E402
@@ -124,3 +124,64 @@ def test_one_road_over_chunks_with_dask(road_file):
     road.apply_modifiers()
     u, v = points(road, 20_000, 9)
     assert same_bits(python_parallel.with_dask(road, u, v), road.uv_to_z(u, v))
+
+
+def test_a_road_read_in_place_pickles_as_its_file_not_its_grid(tmp_path):
+    path = write_krbi(tmp_path / "long.crg", n_u=20_001, n_v=401)
+    road = opencrg.Road(path, in_place=True)
+    assert road.in_place and not opencrg.Road(path, in_place=False).in_place
+    road.check()
+    road.apply_modifiers()
+    data = pickle.dumps(road)
+    assert len(data) < 2_000 < path.stat().st_size // 10_000
+    copy = pickle.loads(data)
+    assert copy.in_place
+    same_answers(road, copy)
+    memory = opencrg.Road(path, in_place=False)
+    memory.check()
+    memory.apply_modifiers()
+    same_answers(road, memory)
+    # A road read into memory is unpickled into memory, whatever the worker's environment.
+    assert not again(opencrg.Road(path, in_place="1T")).in_place
+    with pytest.raises(opencrg.RequestError, match="in_place"):
+        opencrg.Road(path, in_place="sometimes")
+
+
+def test_parts_of_one_big_road_read_in_place_by_dask_workers(tmp_path):
+    """A road of 0.8 GB read in place here and by the workers of a Dask LocalCluster of
+    worker processes, each evaluating parts of it: the answers of this process, bit for
+    bit, and each worker holding less private memory than a fifth of the road (its Python,
+    Dask and the reference line; the grid is the file's, in the system's cache)."""
+    if os.environ.get("OPENCRG_TEST_DASK") == "0":
+        pytest.skip("OPENCRG_TEST_DASK=0")
+    from dask.distributed import Client, LocalCluster
+
+    path = write_krbi(tmp_path / "big.crg", n_u=200_001, n_v=1001)
+    road = opencrg.Road(path, in_place=True, cache="16M")
+    road.check()
+    road.apply_modifiers()
+    u, v = points(road, 40_000, 10)
+    here = road.uv_to_z(u, v)
+    x, y = road.uv_to_xy(u, v)
+    with LocalCluster(n_workers=3, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
+        with Client(cluster) as client:
+            shared = client.scatter(road, broadcast=True)
+            parts = python_parallel.chunks(u, v, 12)
+            futures = [client.submit(python_parallel.elevations, shared, a, b) for a, b in parts]
+            searched = [client.submit(_xy_to_z, shared, a, b) for a, b in python_parallel.chunks(x, y, 12)]
+            assert same_bits(np.concatenate(client.gather(futures)), here)
+            assert same_bits(np.concatenate(client.gather(searched)), road.xy_to_z(x, y))
+            private = client.run(_private_kib)
+    assert len(private) == 3
+    assert all(kib * 1024 < path.stat().st_size / 5 for kib in private.values()), private
+
+
+def _xy_to_z(road, x, y):
+    """x/y to z in a worker (each worker's own contact point: the road's batch call)."""
+    return road.xy_to_z(x, y)
+
+
+def _private_kib():
+    """This process's private memory (RssAnon) in KiB."""
+    with open("/proc/self/status") as f:
+        return next(int(line.split()[1]) for line in f if line.startswith("RssAnon:"))

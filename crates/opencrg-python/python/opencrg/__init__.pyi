@@ -69,10 +69,25 @@ class Road:
 
     ``compat``: ``"2.0.1"`` (releases 2.0.1/1.2.0) or ``"upstream"`` (the default); when
     not given, the environment variable ``OPENCRG_COMPAT`` decides, as in the C library.
+    ``in_place``: whether a binary road's grid is read in place from its file (its values
+    read where evaluation reaches them, through the system's file cache, into a bounded
+    cache of ``cache`` bytes): ``True``, ``False``, a size such as ``"256M"`` from which on,
+    or ``None`` (``OPENCRG_IN_PLACE``, else from 1 GiB on). A road read in place pickles as
+    its file and how it was read, not its grid.
     Raises ``FileNotFoundError`` for a missing file and ``FormatError`` for a bad one.
     """
 
-    def __init__(self, path: _Path, *, compat: Optional[str] = None) -> None: ...
+    def __init__(
+        self,
+        path: _Path,
+        *,
+        compat: Optional[str] = None,
+        in_place: Union[bool, int, str, None] = None,
+        cache: Union[int, str, None] = None,
+    ) -> None: ...
+    @property
+    def in_place(self) -> bool:
+        """Whether the grid is read in place from the file (else it is in memory)."""
     @staticmethod
     def from_bytes(data: bytes, name: str = "<bytes>", *, compat: Optional[str] = None) -> Road: ...
     def check(self) -> None:
