@@ -25,6 +25,10 @@ pub(crate) struct FmuArgs {
     /// build's binary beside this program.
     #[arg(long)]
     binaries: Option<PathBuf>,
+    /// Leave the CRG file outside the FMU, named by its absolute path (a road of gigabytes
+    /// is read in place where it lies; the parameter roadFile names another file).
+    #[arg(long)]
+    road_outside: bool,
 }
 
 /// The binaries to pack: from the folder named, else the first place that has some.
@@ -71,7 +75,12 @@ pub(crate) fn run(args: FmuArgs) -> Result<(), Failure> {
         3 => Fmi::V3,
         other => return Err(format!("--fmi {other}: 2 (FMI 2.0) or 3 (FMI 3.0)")),
     };
-    let options = FmuOptions { wheels: args.wheels, fmi, binaries: binaries(args.binaries.as_deref())? };
+    let options = FmuOptions {
+        wheels: args.wheels,
+        fmi,
+        binaries: binaries(args.binaries.as_deref())?,
+        outside: args.road_outside,
+    };
     let report = write_fmu(&args.road, &args.output, &options).map_err(|e| e.to_string())?;
     let platforms: Vec<&str> = report.platforms.iter().map(|p| p.tuple()).collect();
     eprintln!(

@@ -165,13 +165,7 @@ pub unsafe extern "C" fn fmi2SetupExperiment(
 #[no_mangle]
 pub unsafe extern "C" fn fmi2EnterInitializationMode(c: Component) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            i.expect(&[State::Instantiated], "entering initialization mode")?;
-            i.state = State::Initialization;
-            Ok(())
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.enter_initialization()) }
 }
 
 /// Leaves initialization mode: into event mode (model exchange) or stepping

@@ -179,9 +179,8 @@ pub unsafe extern "C" fn fmi3EnterInitializationMode(
     // SAFETY: the caller's promise.
     unsafe {
         on_instance(this_export!(), c, |i| {
-            i.expect(&[State::Instantiated], "entering initialization mode")?;
+            i.enter_initialization()?;
             i.set_time(start_time);
-            i.state = State::Initialization;
             Ok(())
         })
     }

@@ -185,6 +185,17 @@ impl Instance {
         self.interface
     }
 
+    /// Enters initialization mode: refused in another state than instantiated, and while
+    /// the road the FMU names outside itself is missing (`roadFile` must name one first).
+    pub fn enter_initialization(&mut self) -> Result<(), Refused> {
+        self.expect(&[State::Instantiated], "entering initialization mode")?;
+        if let Some(why) = self.fmu.missing() {
+            return Err(error(format!("{why}: set the parameter roadFile to the road's CRG file")));
+        }
+        self.state = State::Initialization;
+        Ok(())
+    }
+
     /// Refuses a call made in a state that does not allow it.
     pub fn expect(&self, allowed: &[State], what: &str) -> Result<(), Refused> {
         if allowed.contains(&self.state) {
@@ -414,6 +425,7 @@ impl Instance {
             self.may(Act::Get, &self.name_of(vr))?;
             match Parameter::from_vr(self.kind, vr) {
                 Some(Parameter::Compat) => self.strings.push(crate::log::c_text(&self.parameters.compat)),
+                Some(Parameter::RoadFile) => self.strings.push(crate::log::c_text(self.fmu.road_file())),
                 _ => return Err(self.not_a(vr, "String")),
             }
         }
@@ -430,6 +442,12 @@ impl Instance {
                 fmu_compat.compat = value.trim().to_string();
                 self.fmu.set_compat(compat).map_err(error)?;
                 self.parameters = fmu_compat;
+                self.rebuild()
+            }
+            Some(p @ Parameter::RoadFile) => {
+                self.may(Act::SetFixed, &p.name())?;
+                self.fmu.set_road_file(value).map_err(error)?;
+                self.take_road_starts();
                 self.rebuild()
             }
             _ => Err(self.not_a(vr, "String")),
@@ -471,11 +489,32 @@ impl Instance {
         Ok(())
     }
 
+    /// The options' start values anew from the road now read (its file's options), each
+    /// option set since kept.
+    fn take_road_starts(&mut self) {
+        for (k, start) in self.starts.options.iter_mut().enumerate() {
+            let now = match self.fmu.ground.parameter_start(Parameter::Option(start.0)) {
+                Start::Integer(i) => Value::Int(i),
+                Start::Real(d) => Value::Double(d),
+                _ => continue,
+            };
+            if let Some(set) = self.parameters.options.get_mut(k).filter(|o| o.1 == start.1) {
+                set.1 = now;
+            }
+            start.1 = now;
+        }
+    }
+
     /// Back to the state after instantiation: start values, time 0.
     pub fn reset(&mut self) -> Result<(), Refused> {
         if self.parameters.compat != self.starts.compat {
             let compat = compat_named(&self.starts.compat).map_err(error)?;
             self.fmu.set_compat(compat).map_err(error)?;
+        }
+        let start = self.fmu.road_file_start();
+        if self.fmu.road_file() != start {
+            self.fmu.set_road_file(&start).map_err(error)?;
+            self.take_road_starts();
         }
         self.parameters = self.starts.clone();
         self.wheels = self.fmu.wheels(&[]).map_err(error)?;

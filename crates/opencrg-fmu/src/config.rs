@@ -13,7 +13,9 @@
 //! ```
 //!
 //! Paths are relative to `resources/`, with `/` between folders; `crg.N.file` is a CRG
-//! record's `file` attribute as the map writes it, `crg.N.path` where the file now is.
+//! record's `file` attribute as the map writes it, `crg.N.path` where the file now is. A
+//! CRG file left outside the FMU (a road of gigabytes is not copied into a zip) is named
+//! by `outside = yes` and its absolute path as `road`.
 
 use crate::variables::{Kind, MAX_WHEELS};
 use opencrg_core::{Error, Location};
@@ -29,8 +31,10 @@ pub struct Config {
     pub token: String,
     /// A CRG file or a map.
     pub kind: Kind,
-    /// The road's file, relative to `resources/`.
+    /// The road's file, relative to `resources/` (or its absolute path, when `outside`).
     pub road: String,
+    /// Whether the road (a CRG file) lies outside the FMU, at the absolute path `road`.
+    pub outside: bool,
     /// How many wheels.
     pub wheels: u32,
     /// A map's CRG files: each record's `file` attribute and where the file is,
@@ -49,6 +53,9 @@ impl Config {
             "# opencrg FMU resources: what the binary loads\ntoken = {}\nkind = {kind}\nroad = {}\nwheels = {}\n",
             self.token, self.road, self.wheels
         );
+        if self.outside {
+            text.push_str("outside = yes\n");
+        }
         for (i, (file, path)) in self.crg.iter().enumerate() {
             text.push_str(&format!("crg.{}.file = {file}\ncrg.{}.path = {path}\n", i + 1, i + 1));
         }
@@ -68,7 +75,7 @@ impl Config {
 
     /// [`Config::parse`]'s work: a refusal with its line (0: the file).
     fn parse_text(text: &str) -> Result<Config, (usize, String)> {
-        let (mut token, mut kind, mut road, mut wheels) = (None, None, None, None);
+        let (mut token, mut kind, mut road, mut wheels, mut outside) = (None, None, None, None, false);
         let mut files: Vec<(Option<String>, Option<String>)> = Vec::new();
         for (n, line) in text.lines().enumerate() {
             let line = line.trim();
@@ -88,6 +95,13 @@ impl Config {
                     })
                 }
                 "road" => road = Some(value),
+                "outside" => {
+                    outside = match value.as_str() {
+                        "yes" => true,
+                        "no" => false,
+                        other => return Err(at(&format!("outside '{other}': yes or no"))),
+                    }
+                }
                 "wheels" => {
                     let count = value.parse::<u32>().ok().filter(|w| (1..=MAX_WHEELS).contains(w));
                     wheels = Some(count.ok_or_else(|| at(&format!("wheels '{value}': 1 to {MAX_WHEELS}")))?);
@@ -126,9 +140,19 @@ impl Config {
             token: token.ok_or_else(|| missing("token"))?,
             kind: kind.ok_or_else(|| missing("kind"))?,
             road: road.ok_or_else(|| missing("road"))?,
+            outside,
             wheels: wheels.ok_or_else(|| missing("wheels"))?,
             crg,
         })
+    }
+
+    /// Where the road's file is: under `resources`, or outside the FMU.
+    pub fn road_path(&self, resources: &Path) -> PathBuf {
+        if self.outside {
+            PathBuf::from(&self.road)
+        } else {
+            Config::resolve(resources, &self.road)
+        }
     }
 
     /// A path of the file, relative to `resources/`, under the folder `resources`.
@@ -147,10 +171,16 @@ mod tests {
             token: "{01234567-89ab-cdef-0123-456789abcdef}".into(),
             kind: Kind::Map,
             road: "road/town 1.xodr".into(),
+            outside: false,
             wheels: 4,
             crg: vec![("../a b/c.crg".into(), "crg/1/c.crg".into()), ("d.crg".into(), "crg/2/d.crg".into())],
         };
         assert_eq!(Config::parse(&config.to_text(), Path::new("c.txt")).unwrap(), config);
+        let outside =
+            Config { kind: Kind::Crg, road: "/data/roads/track 1.crg".into(), outside: true, crg: vec![], ..config };
+        let back = Config::parse(&outside.to_text(), Path::new("c.txt")).unwrap();
+        assert_eq!(back, outside);
+        assert_eq!(back.road_path(Path::new("/fmu/resources")), Path::new("/data/roads/track 1.crg"));
     }
 
     #[test]

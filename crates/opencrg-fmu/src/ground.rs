@@ -35,6 +35,13 @@ impl Ground {
         Ok(Ground::Crg(Arc::new(road)))
     }
 
+    /// A flat road of four nodes: what an FMU answers on while the CRG file it names
+    /// outside itself is missing (it refuses to initialize meanwhile).
+    pub fn placeholder() -> Result<Ground> {
+        let road = opencrg_core::synth::RoadSpec::straight(1.0, 1.0, 1.0, 1.0).build()?;
+        Ok(Ground::Crg(Arc::new(road)))
+    }
+
     /// Reads the map in `path` and the CRG files its records name; a record whose file
     /// (as written) is in `moved` reads the path given there instead.
     pub fn load_map(path: &Path, moved: &[(String, PathBuf)]) -> Result<Ground> {
@@ -81,6 +88,7 @@ impl Ground {
         match parameter {
             Parameter::FrictionDefault => Start::Real(FRICTION_DEFAULT),
             Parameter::Compat => Start::String(COMPAT_DEFAULT.into()),
+            Parameter::RoadFile => Start::String(String::new()),
             Parameter::Option(id) => {
                 let value = match self {
                     Ground::Crg(road) => road.options().get(id),

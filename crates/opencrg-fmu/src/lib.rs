@@ -42,19 +42,31 @@ pub struct Fmu {
     pub ground: Ground,
     resources: PathBuf,
     compat: Compat,
+    /// The `roadFile` parameter: the CRG file read instead of the FMU's own road (empty:
+    /// the FMU's own).
+    road_file: String,
+    /// Why the road named outside the FMU is missing (the FMU answers on a placeholder and
+    /// refuses to initialize until `roadFile` names a road that loads).
+    missing: Option<String>,
 }
 
 impl Fmu {
     /// Reads `resources/opencrg-fmu.txt` and loads the road it names (a CRG file in the
     /// current behaviour profile). Refused, with the file and the reason: a missing or
-    /// damaged configuration, a road or CRG file that cannot be read or is refused.
+    /// damaged configuration, a road or CRG file that cannot be read or is refused (but a
+    /// CRG file named outside the FMU that is not there: see [`Fmu::missing`]).
     pub fn load(resources: &Path) -> Result<Fmu> {
         let file = resources.join(config::FILE_NAME);
         let text = std::fs::read_to_string(&file).map_err(|e| Error::reading(&file, e))?;
         let config = Config::parse(&text, &file)?;
         let compat = Compat::default();
-        let ground = load_ground(resources, &config, compat)?;
-        Ok(Fmu { config, ground, resources: resources.to_path_buf(), compat })
+        let (ground, missing) = match load_ground(resources, &config, compat) {
+            Ok(ground) => (ground, None),
+            Err(e @ Error::NotFound { .. }) if config.outside => (Ground::placeholder()?, Some(e.to_string())),
+            Err(e) => return Err(e),
+        };
+        let road_file = if config.outside { config.road.clone() } else { String::new() };
+        Ok(Fmu { config, ground, resources: resources.to_path_buf(), compat, road_file, missing })
     }
 
     /// The behaviour profile the road was loaded with.
@@ -65,16 +77,66 @@ impl Fmu {
     /// Loads a CRG file again in another behaviour profile (a map's files are read in
     /// the current one).
     pub fn set_compat(&mut self, compat: Compat) -> Result<()> {
-        if compat != self.compat && self.config.kind == Kind::Crg {
-            self.ground = load_ground(&self.resources, &self.config, compat)?;
-            self.compat = compat;
+        if compat != self.compat && self.config.kind == Kind::Crg && self.missing.is_none() {
+            self.ground = Ground::load_crg(&self.road_path(), compat)?;
         }
+        self.compat = compat;
         Ok(())
+    }
+
+    /// The `roadFile` parameter's value.
+    pub fn road_file(&self) -> &str {
+        &self.road_file
+    }
+
+    /// The `roadFile` parameter's start value: empty, or the path of a road left outside
+    /// the FMU.
+    pub fn road_file_start(&self) -> String {
+        if self.config.outside {
+            self.config.road.clone()
+        } else {
+            String::new()
+        }
+    }
+
+    /// Reads the CRG file `file` instead of the FMU's road (empty: the FMU's own road
+    /// again); refused, the road kept: a file that cannot be read or is refused.
+    pub fn set_road_file(&mut self, file: &str) -> Result<()> {
+        let file = file.trim();
+        let path = if file.is_empty() { self.config.road_path(&self.resources) } else { PathBuf::from(file) };
+        self.ground = Ground::load_crg(&path, self.compat)?;
+        self.road_file = file.to_string();
+        self.missing = None;
+        Ok(())
+    }
+
+    /// Why the road named outside the FMU is missing, while it is.
+    pub fn missing(&self) -> Option<&str> {
+        self.missing.as_deref()
+    }
+
+    /// The CRG file read now.
+    fn road_path(&self) -> PathBuf {
+        if self.road_file.is_empty() {
+            self.config.road_path(&self.resources)
+        } else {
+            PathBuf::from(&self.road_file)
+        }
     }
 
     /// The model's variables (FMI 3's time first when `with_time`).
     pub fn variables(&self, with_time: bool) -> Vec<Variable> {
-        variables_of(&self.ground, self.config.wheels, with_time)
+        let start = self.road_file_start();
+        variables::variables(
+            self.ground.kind(),
+            self.config.wheels,
+            with_time,
+            self.ground.start_point(),
+            |p| match p {
+                variables::Parameter::RoadFile => variables::Start::String(start.clone()),
+                p => self.ground.parameter_start(p),
+            },
+        )
     }
 
     /// The wheels at their start point, a CRG file's contact points with the options
@@ -84,15 +146,9 @@ impl Fmu {
     }
 }
 
-/// The variables of an FMU with `wheels` wheels on `ground` (FMI 3's time first when
-/// `with_time`), their start values from the road.
-pub fn variables_of(ground: &Ground, wheels: u32, with_time: bool) -> Vec<Variable> {
-    variables::variables(ground.kind(), wheels, with_time, ground.start_point(), |p| ground.parameter_start(p))
-}
-
 /// Loads the road `config` names under `resources`.
-pub fn load_ground(resources: &Path, config: &Config, compat: Compat) -> Result<Ground> {
-    let road = Config::resolve(resources, &config.road);
+fn load_ground(resources: &Path, config: &Config, compat: Compat) -> Result<Ground> {
+    let road = config.road_path(resources);
     match config.kind {
         Kind::Crg => Ground::load_crg(&road, compat),
         Kind::Map => {

@@ -194,6 +194,9 @@ pub enum Parameter {
     FrictionDefault,
     /// The behaviour profile a CRG file is read and evaluated with (a CRG file's FMU only).
     Compat,
+    /// A CRG file to read instead of the FMU's own road (a CRG file's FMU only): empty for
+    /// the road the FMU was made with (for a road left outside the FMU, its path).
+    RoadFile,
     /// A contact point option of the C API (a CRG file's FMU only), by identifier.
     Option(u32),
 }
@@ -223,6 +226,7 @@ impl Parameter {
         let mut all = vec![Parameter::FrictionDefault];
         if kind == Kind::Crg {
             all.push(Parameter::Compat);
+            all.push(Parameter::RoadFile);
             let mut ids: Vec<u32> = OPTIONS.iter().map(|&(id, _)| id).collect();
             ids.sort_unstable();
             all.extend(ids.into_iter().map(Parameter::Option));
@@ -235,6 +239,7 @@ impl Parameter {
         match self {
             Parameter::FrictionDefault => 1,
             Parameter::Compat => 2,
+            Parameter::RoadFile => 3,
             Parameter::Option(id) => 10 + id,
         }
     }
@@ -249,6 +254,7 @@ impl Parameter {
         match self {
             Parameter::FrictionDefault => "frictionDefault".into(),
             Parameter::Compat => "compat".into(),
+            Parameter::RoadFile => "roadFile".into(),
             Parameter::Option(id) => {
                 let keyword = OPTIONS.iter().find(|o| o.0 == id).map_or("unknown", |o| o.1);
                 format!("options.{keyword}")
@@ -260,7 +266,7 @@ impl Parameter {
     pub fn ty(self) -> Type {
         match self {
             Parameter::FrictionDefault => Type::Real,
-            Parameter::Compat => Type::String,
+            Parameter::Compat | Parameter::RoadFile => Type::String,
             Parameter::Option(id) => match settings::describe(id) {
                 Some((_, SettingKind::Int)) => Type::Integer,
                 _ => Type::Real,
@@ -280,6 +286,9 @@ impl Parameter {
         match self {
             Parameter::FrictionDefault => "friction answered where the road gives none (and off every road)".into(),
             Parameter::Compat => "behaviour profile: current, or 2.0.1 for the releases 2.0.1 and 1.2.0".into(),
+            Parameter::RoadFile => "a CRG file (its path) read instead of the FMU's road; empty: the FMU's own road \
+                                    (a road of gigabytes is read in place from its file)"
+                .into(),
             Parameter::Option(id) => {
                 format!(
                     "contact point option {} ({}); applied where changed",

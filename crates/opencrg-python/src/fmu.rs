@@ -33,10 +33,11 @@ fn binaries(py: Python<'_>, named: Option<PathBuf>) -> PyResult<Vec<Binary>> {
 
 /// Packs the road in `road` (a CRG file, or an OpenDRIVE map with the CRG files its
 /// records name) as an FMU in `path`: FMI 2.0 or 3.0 (`fmi`), model exchange and
-/// co-simulation, answering height, normal and friction under `wheels` wheels. Returns
+/// co-simulation, answering height, normal and friction under `wheels` wheels; with
+/// `road_outside`, a CRG file is named by its absolute path instead of packed. Returns
 /// what was packed: `identifier`, `resources`, `platforms`, `variables`.
 #[pyfunction]
-#[pyo3(signature = (road, path, wheels = 4, fmi = 2, binaries = None))]
+#[pyo3(signature = (road, path, wheels = 4, fmi = 2, binaries = None, *, road_outside = false))]
 pub(crate) fn write_fmu<'py>(
     py: Python<'py>,
     road: PathBuf,
@@ -44,13 +45,14 @@ pub(crate) fn write_fmu<'py>(
     wheels: u32,
     fmi: u32,
     binaries: Option<PathBuf>,
+    road_outside: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let fmi = match fmi {
         2 => Fmi::V2,
         3 => Fmi::V3,
         other => return Err(request_error(format!("fmi={other}: 2 or 3"))),
     };
-    let options = FmuOptions { wheels, fmi, binaries: self::binaries(py, binaries)? };
+    let options = FmuOptions { wheels, fmi, binaries: self::binaries(py, binaries)?, outside: road_outside };
     let report = py.detach(|| pack(&road, &path, &options)).map_err(to_py)?;
     let d = PyDict::new(py);
     d.set_item("identifier", report.identifier)?;

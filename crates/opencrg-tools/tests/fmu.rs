@@ -21,7 +21,7 @@ fn dir(name: &str) -> PathBuf {
 fn options(d: &Path, fmi: Fmi, wheels: u32) -> FmuOptions {
     let file = d.join("libstand_in.so");
     std::fs::write(&file, b"not a library").unwrap();
-    FmuOptions { wheels, fmi, binaries: vec![Binary { platform: Platform::LinuxX86_64, file }] }
+    FmuOptions { wheels, fmi, binaries: vec![Binary { platform: Platform::LinuxX86_64, file }], outside: false }
 }
 
 /// The zip's entries: names and contents.
@@ -46,7 +46,7 @@ fn a_crg_file_is_packed_with_its_description_resources_and_binary_the_same_each_
     let d = dir("crg");
     let report = write_fmu(&demo("demo_road.crg"), &d.join("a.fmu"), &options(&d, Fmi::V2, 4)).unwrap();
     assert_eq!(report.identifier, "demo_road");
-    assert_eq!(report.variables, 10 + 4 * 12);
+    assert_eq!(report.variables, 11 + 4 * 12);
     let got = entries(&d.join("a.fmu"));
     let names: Vec<&str> = got.iter().map(|e| e.0.as_str()).collect();
     assert_eq!(

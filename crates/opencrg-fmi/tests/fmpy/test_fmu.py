@@ -408,3 +408,63 @@ def test_an_fmu_lacking_its_crg_file_is_refused_at_instantiation(work, fmi):
     assert result["wheel[1].onRoad"].all()
     shutil.rmtree(unzipped, ignore_errors=True)
 
+
+
+@pytest.mark.parametrize("fmi", [2, 3])
+def test_a_road_left_outside_the_fmu_is_read_in_place_where_it_lies(work, fmi, monkeypatch):
+    monkeypatch.setenv("OPENCRG_IN_PLACE", "always")
+    source = SHARED / "conformance/crg-txt/handmade_curved_banked_sloped.crg"
+    road = work / f"outside{fmi}.crg"
+    cli("convert", source, road, "--format", "KRBI")
+    fmu = work / f"outside{fmi}.fmu"
+    cli("fmu", road, fmu, "--fmi", fmi, "--wheels", WHEELS, "--road-outside")
+    with zipfile.ZipFile(fmu) as z:
+        assert not [n for n in z.namelist() if n.endswith(".crg")], z.namelist()
+    assert validate_fmu(str(fmu)) == []
+    md = fmpy.read_model_description(str(fmu))
+    start = {v.name: v.start for v in md.modelVariables}
+    assert start["roadFile"] == str(road.resolve())
+    probe = crg_oracle(road)
+    data = capi.crgLoaderReadFile(str(road).encode())
+    capi.crgDataSetModifiersApply(data)
+    cp = capi.crgContactPointCreate(data)
+    capi.crgEvaluv2xy.argtypes = [ctypes.c_int, D, D, P(D), P(D)]
+    x, y = D(), D()
+
+    def xy_of(s, t):
+        capi.crgEvaluv2xy(cp, (s - 90.0) * 0.3, t, ctypes.byref(x), ctypes.byref(y))
+        return x.value, y.value
+
+    table = wheel_path(xy_of, n=60)
+    outputs = [f"wheel[{i}].{q}" for i in range(1, WHEELS + 1) for q in ("x", "y", "z", "u", "v")]
+
+    def answers_as_the_c_api(result):
+        for row in result:
+            for i in range(1, WHEELS + 1):
+                want = probe(row[f"wheel[{i}].x"], row[f"wheel[{i}].y"])
+                for q in ("z", "u", "v"):
+                    assert same(float(row[f"wheel[{i}].{q}"]), want[q]), (i, q)
+
+    answers_as_the_c_api(simulate(fmu, "CoSimulation", table, outputs))
+    # The road moved: instantiation goes on, initialization is refused naming the file
+    # and the parameter, until roadFile names where the road lies now.
+    moved = work / f"moved{fmi}" / "road.crg"
+    moved.parent.mkdir(exist_ok=True)
+    road.rename(moved)
+    unzipped = fmpy.extract(str(fmu))
+    said = []
+    if fmi == 2:
+        callbacks = fmi2CallbackFunctions()
+        callbacks.logger = fmi2CallbackLoggerTYPE(lambda env, name, status, cat, msg: said.append(msg.decode()))
+        slave = FMU2Slave(guid=md.guid, unzipDirectory=unzipped, modelIdentifier=md.coSimulation.modelIdentifier)
+        slave.instantiate(callbacks=callbacks)
+        slave.setupExperiment()
+    else:
+        slave = FMU3Slave(guid=md.guid, unzipDirectory=unzipped, modelIdentifier=md.coSimulation.modelIdentifier)
+        slave.instantiate(logMessage=lambda env, status, cat, msg: said.append(msg.decode()))
+    with pytest.raises(Exception):
+        slave.enterInitializationMode()
+    assert any(road.name in m and "roadFile" in m for m in said), said
+    slave.freeInstance()
+    shutil.rmtree(unzipped, ignore_errors=True)
+    answers_as_the_c_api(simulate(fmu, "CoSimulation", table, outputs, start_values={"roadFile": str(moved)}))

@@ -277,12 +277,15 @@ def write_fmu(
     wheels: int = 4,
     fmi: int = 2,
     binaries: Optional[Union[str, PathLike[str]]] = None,
+    *,
+    road_outside: bool = False,
 ) -> dict[str, object]:
     """The road (a CRG file, or an OpenDRIVE map with its CRG files) packed as an FMU in
     `path`: FMI 2.0 or 3.0, model exchange and co-simulation, answering height, normal
     and friction under `wheels` wheels. FMU binaries from `binaries`, else
     $OPENCRG_FMU_BINARIES, else the package's own (wheels carry the Linux x86-64 one).
-    Returns identifier, resources, platforms, variables."""
+    With `road_outside`, a CRG file is named by its absolute path, not packed (the FMU's
+    parameter roadFile names another). Returns identifier, resources, platforms, variables."""
 
 class ContactPoint:
     """A point of evaluation: its own options and x/y search history.

@@ -10,9 +10,9 @@
 //! the FMU's binary will load it; the FMU is written to a temporary file and renamed,
 //! so a refused road leaves nothing behind.
 
-use opencrg_core::{Compat, Error, Result};
+use opencrg_core::{Error, Result};
 use opencrg_fmu::description::{identifier_of, model_description, Fmi, Meta};
-use opencrg_fmu::{config, load_ground, Config, Kind};
+use opencrg_fmu::{config, Config, Kind};
 use std::io::Write;
 use std::path::{Component, Path, PathBuf};
 
@@ -107,6 +107,10 @@ pub struct FmuOptions {
     pub fmi: Fmi,
     /// The binaries to put in (at least one).
     pub binaries: Vec<Binary>,
+    /// Whether a CRG file is left outside the FMU, named by its absolute path (a road of
+    /// gigabytes is then read in place from where it lies, not copied into the zip); the
+    /// FMU's `roadFile` parameter names another file where the road lies elsewhere.
+    pub outside: bool,
 }
 
 /// What was packed.
@@ -226,10 +230,17 @@ fn crg_files(path: &Path, under: &str, entries: &mut Vec<Entry>) -> Result<Strin
 
 /// The files of the road in `road` and the configuration that names them (its token
 /// still empty).
-fn gather(road: &Path, kind: Kind, wheels: u32) -> Result<(Vec<Entry>, Config)> {
+fn gather(road: &Path, kind: Kind, wheels: u32, outside: bool) -> Result<(Vec<Entry>, Config)> {
     let mut entries = Vec::new();
-    let mut config = Config { token: String::new(), kind, road: String::new(), wheels, crg: Vec::new() };
+    let mut config = Config { token: String::new(), kind, road: String::new(), outside, wheels, crg: Vec::new() };
     match kind {
+        Kind::Crg if outside => {
+            opencrg_core::Road::load(road)?;
+            config.road = canonical(road)?.to_string_lossy().into_owned();
+        }
+        Kind::Map if outside => {
+            return Err(refused("a map's FMU holds its files: only a CRG file is left outside".into()))
+        }
         Kind::Crg => config.road = crg_files(road, "road", &mut entries)?,
         Kind::Map => {
             let map = opencrg_odr::Map::load(road)?;
@@ -323,11 +334,12 @@ pub fn write_fmu(road: &Path, out: &Path, options: &FmuOptions) -> Result<FmuRep
     }
     let is_map = road.extension().is_some_and(|e| e.eq_ignore_ascii_case("xodr"));
     let kind = if is_map { Kind::Map } else { Kind::Crg };
-    let (entries, mut config) = gather(road, kind, options.wheels)?;
+    let (entries, mut config) = gather(road, kind, options.wheels, options.outside)?;
 
     // Laid out, hashed, and loaded as the binary will load it.
     let staging = Staging::new(road)?;
     let resources = staging.0.join("resources");
+    std::fs::create_dir_all(&resources).map_err(|e| Error::writing(&resources, e))?;
     let mut contents: Vec<Vec<u8>> = Vec::new();
     for entry in &entries {
         let bytes = std::fs::read(&entry.source).map_err(|e| Error::reading(&entry.source, e))?;
@@ -345,16 +357,20 @@ pub fn write_fmu(road: &Path, out: &Path, options: &FmuOptions) -> Result<FmuRep
         hashed.extend([entry.inside.as_bytes(), bytes.as_slice()]);
     }
     hashed.push(settings.as_bytes());
+    if config.outside {
+        hashed.push(config.road.as_bytes());
+    }
     config.token = token_of(&hashed);
     let config_text = config.to_text();
     let config_file = resources.join(config::FILE_NAME);
     std::fs::write(&config_file, &config_text).map_err(|e| Error::writing(&config_file, e))?;
-    let ground = load_ground(&resources, &config, Compat::default())?;
+    // Loaded as the binary loads it: the variables and their start values are its own.
+    let fmu = opencrg_fmu::Fmu::load(&resources)?;
 
     let name = road.file_stem().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
     let file_name = road.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
     let identifier = identifier_of(&name);
-    let variables = opencrg_fmu::variables_of(&ground, options.wheels, options.fmi == Fmi::V3);
+    let variables = fmu.variables(options.fmi == Fmi::V3);
     let description = match kind {
         Kind::Crg => format!("OpenCRG road {file_name}: height, normal and friction under {} wheels", options.wheels),
         Kind::Map => format!(
