@@ -7,7 +7,9 @@
 # the instruction guard of the hot calls (callgrind against a kept baseline), through
 # CTest the C tests (also under the sanitizers and valgrind), the header and
 # symbol checks, the CMake consumer project, the conformance suite in both behaviour
-# profiles (.so and .a) and the differential tester; the same C tests and conformance
+# profiles (.so and .a, and with every binary road read in place), roads read in place
+# (a file cut short under an open road, a 2 GB road opened by four processes at once) and
+# the differential tester; the same C tests and conformance
 # suite on Windows (MinGW-w64 build under wine, with the zip's CMake package and MSVC
 # import library) and from the Linux archives (glibc 2.17, zig; the aarch64 one under
 # qemu), with CMake and pkg-config consumers, and each platform's FMU binary through a C
@@ -33,6 +35,9 @@ step "Rust tests"
 cargo test --workspace
 # The tests that read ../shared (ignored in a plain clone).
 cargo test --workspace -- --ignored shared_
+# The maps', the FMU's and the toolkit's tests once more with every binary road read in
+# place (their CRG files are KDBI): the answers they check must not change.
+OPENCRG_IN_PLACE=always cargo test -p opencrg-odr -p opencrg-fmu -p opencrg-tools
 step "publishing checks"
 # Ready to publish: the workspace's crates depended on at the workspace's version; the
 # rust-version true (the workspace checks with that toolchain, installed by rustup); every

@@ -9,12 +9,14 @@
 //! crg-difftest --a INCLUDE_DIR:LIBRARY --b INCLUDE_DIR:LIBRARY
 //!              [--roads N] [--seed S] [--profile current|2.0.1] [--work DIR] [--show N]
 //!              [--timeout SECONDS]  (a client run that takes longer counts as hung; 10)
+//!              [--a-env NAME=VALUE]...  (set for a's client only, e.g. OPENCRG_IN_PLACE=always)
 //! crg-difftest --generate DIR [--roads N] [--seed S]     (roads and scripts only)
 //! ```
 //!
 //! `a` is the library under test, `b` the one it is compared with. With
 //! `--profile 2.0.1` both clients run with `OPENCRG_COMPAT=2.0.1` in their
-//! environment. A road on which only `b` fails (hangs or crashes: the reference
+//! environment; `--a-env` sets a variable for `a`'s client alone (the same library read
+//! in place against itself read into memory). A road on which only `b` fails (hangs or crashes: the reference
 //! library loops forever in its x/y search on some roads) is reported and counted, not
 //! compared. The exit status is 0 when every answer agrees, 1 when some differ or `a`
 //! failed, 2 on a usage or build error.
@@ -41,11 +43,13 @@ struct Args {
     generate_only: Option<PathBuf>,
     show: usize,
     timeout: Duration,
+    /// Environment variables set for a's client alone.
+    a_env: Vec<(String, String)>,
 }
 
 fn usage() -> String {
     "usage: crg-difftest --a INCLUDE_DIR:LIBRARY --b INCLUDE_DIR:LIBRARY [--roads N] [--seed S] \
-     [--profile current|2.0.1] [--work DIR] [--show N] [--timeout SECONDS]\n       crg-difftest --generate DIR [--roads N] [--seed S]"
+     [--profile current|2.0.1] [--work DIR] [--show N] [--timeout SECONDS] [--a-env NAME=VALUE]...\n       crg-difftest --generate DIR [--roads N] [--seed S]"
         .to_string()
 }
 
@@ -60,6 +64,7 @@ fn parse_args() -> Result<Args, String> {
         generate_only: None,
         show: 3,
         timeout: Duration::from_secs(10),
+        a_env: Vec::new(),
     };
     let mut it = std::env::args().skip(1);
     while let Some(flag) = it.next() {
@@ -83,6 +88,11 @@ fn parse_args() -> Result<Args, String> {
                 }
             }
             "--work" => args.work = Some(PathBuf::from(value()?)),
+            "--a-env" => {
+                let v = value()?;
+                let (name, set) = v.split_once('=').ok_or_else(|| format!("--a-env: '{v}' is not NAME=VALUE"))?;
+                args.a_env.push((name.to_string(), set.to_string()));
+            }
             "--generate" => args.generate_only = Some(PathBuf::from(value()?)),
             "-h" | "--help" => return Err(usage()),
             other => return Err(format!("unknown argument '{other}'\n{}", usage())),
@@ -130,13 +140,20 @@ fn build_client(work: &Path, name: &str, (include, library): &(PathBuf, PathBuf)
     Ok(exe)
 }
 
-/// Runs a client on a case; its output, or why there is none.
-fn run_client(exe: &Path, dir: &Path, profile: &str, limit: Duration) -> Result<String, String> {
+/// Runs a client on a case (with the variables `env` set); its output, or why there is none.
+fn run_client(
+    exe: &Path,
+    dir: &Path,
+    profile: &str,
+    env: &[(String, String)],
+    limit: Duration,
+) -> Result<String, String> {
     let mut cmd = Command::new(exe);
     cmd.arg("script.txt").current_dir(dir).stdout(Stdio::piped()).stderr(Stdio::null()).env_remove("OPENCRG_COMPAT");
     if profile == "2.0.1" {
         cmd.env("OPENCRG_COMPAT", "2.0.1");
     }
+    cmd.envs(env.iter().map(|(k, v)| (k, v)));
     let mut child = cmd.spawn().map_err(|e| format!("cannot start {}: {e}", exe.display()))?;
     let mut stdout = child.stdout.take().expect("stdout is piped");
     let reader = std::thread::spawn(move || {
@@ -227,8 +244,8 @@ fn run(args: Args) -> Result<bool, String> {
         let summary = write_case(&dir, args.seed, i).map_err(|e| format!("{}: {e}", dir.display()))?;
         totals.roads += 1;
         let differing_before = totals.differing_roads;
-        let run = |exe: &Path| run_client(exe, &dir, &args.profile, args.timeout);
-        match (run(&client_a), run(&client_b)) {
+        let run = |exe: &Path, env: &[(String, String)]| run_client(exe, &dir, &args.profile, env, args.timeout);
+        match (run(&client_a, &args.a_env), run(&client_b, &[])) {
             (Ok(x), Ok(y)) => compare_case(i, &summary, &x, &y, args.show, &mut totals),
             (x, y) => {
                 let state = |r: &Result<String, String>| r.as_ref().map_or_else(|e| e.clone(), |_| "ran".into());

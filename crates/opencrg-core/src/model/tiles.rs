@@ -16,7 +16,7 @@
 //! shared: each slot carries a sequence number that is odd while the slot is written and
 //! grows with every change, and a lookup that reads the same even number before and after
 //! its values has read one tile whole (a sequence lock). A contact point may also pin a
-//! tile ([`Pin`]): a pinned slot is never filled again until unpinned, so the contact
+//! tile (a pin): a pinned slot is never filled again until unpinned, so the contact
 //! point reads it as plain memory, as it reads a grid in memory. Filling a tile takes the
 //! pool's lock: it claims the slot filled longest ago that nobody pins, reads the records,
 //! checks the file, and publishes the tile.
