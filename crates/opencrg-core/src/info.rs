@@ -51,7 +51,7 @@ pub struct GridScan {
 /// cross section after cross section (its pages handed back as it goes, so that a grid
 /// larger than memory passes through), `progress` told (cross sections done, in all)
 /// every 64 Mi values. Refused: a file that could not be read, naming it.
-pub fn scan(road: &Road, progress: &mut dyn FnMut(usize, usize)) -> crate::Result<GridScan> {
+pub fn scan(road: &Road, progress: &mut dyn FnMut(usize, usize)) -> crate::base::error::Result<GridScan> {
     let g = road.grid();
     let s = road.statistics();
     if !g.is_in_place() {
@@ -72,7 +72,7 @@ pub fn scan(road: &Road, progress: &mut dyn FnMut(usize, usize)) -> crate::Resul
         if iu % every.max(1) == 0 {
             progress(iu, g.nu);
         }
-        Ok::<(), crate::Error>(())
+        Ok::<(), crate::base::error::Error>(())
     })?;
     progress(g.nu, g.nu);
     let start = s.z_mean_start - g.mean;
