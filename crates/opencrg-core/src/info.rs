@@ -59,7 +59,7 @@ pub fn scan(road: &Road, progress: &mut dyn FnMut(usize, usize)) -> crate::base:
         return Ok(GridScan { nan_cells, z_min: s.z_min, z_max: s.z_max });
     }
     let (mut nan_cells, mut lo, mut hi) = (0, f32::INFINITY, f32::NEG_INFINITY);
-    let every = (64 << 20) / g.nv.max(1);
+    let every = ((64 << 20) / g.nv.max(1)).max(1);
     g.rows(0..g.nu, |iu, row| {
         for &z in row {
             if z.is_nan() {
@@ -69,7 +69,7 @@ pub fn scan(road: &Road, progress: &mut dyn FnMut(usize, usize)) -> crate::base:
                 hi = hi.max(z);
             }
         }
-        if iu % every.max(1) == 0 {
+        if iu % every == 0 {
             progress(iu, g.nu);
         }
         Ok::<(), crate::base::error::Error>(())

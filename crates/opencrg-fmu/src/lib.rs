@@ -65,7 +65,7 @@ impl Fmu {
             Err(e @ Error::NotFound { .. }) if config.outside => (Ground::placeholder()?, Some(e.to_string())),
             Err(e) => return Err(e),
         };
-        let road_file = if config.outside { config.road.clone() } else { String::new() };
+        let road_file = road_file_start(&config);
         Ok(Fmu { config, ground, resources: resources.to_path_buf(), compat, road_file, missing })
     }
 
@@ -92,19 +92,14 @@ impl Fmu {
     /// The `roadFile` parameter's start value: empty, or the path of a road left outside
     /// the FMU.
     pub fn road_file_start(&self) -> String {
-        if self.config.outside {
-            self.config.road.clone()
-        } else {
-            String::new()
-        }
+        road_file_start(&self.config)
     }
 
     /// Reads the CRG file `file` instead of the FMU's road (empty: the FMU's own road
     /// again); refused, the road kept: a file that cannot be read or is refused.
     pub fn set_road_file(&mut self, file: &str) -> Result<()> {
         let file = file.trim();
-        let path = if file.is_empty() { self.config.road_path(&self.resources) } else { PathBuf::from(file) };
-        self.ground = Ground::load_crg(&path, self.compat)?;
+        self.ground = Ground::load_crg(&self.path_of(file), self.compat)?;
         self.road_file = file.to_string();
         self.missing = None;
         Ok(())
@@ -117,10 +112,15 @@ impl Fmu {
 
     /// The CRG file read now.
     fn road_path(&self) -> PathBuf {
-        if self.road_file.is_empty() {
+        self.path_of(&self.road_file)
+    }
+
+    /// The CRG file a `roadFile` value names (empty: the FMU's own road).
+    fn path_of(&self, file: &str) -> PathBuf {
+        if file.is_empty() {
             self.config.road_path(&self.resources)
         } else {
-            PathBuf::from(&self.road_file)
+            PathBuf::from(file)
         }
     }
 
@@ -143,6 +143,16 @@ impl Fmu {
     /// `changed`.
     pub fn wheels(&self, changed: &[(u32, Value)]) -> Result<Wheels> {
         Wheels::new(&self.ground, self.config.wheels as usize, self.ground.start_point(), changed)
+    }
+}
+
+/// The `roadFile` parameter's start value for `config`: empty, or the path of a road left
+/// outside the FMU.
+fn road_file_start(config: &Config) -> String {
+    if config.outside {
+        config.road.clone()
+    } else {
+        String::new()
     }
 }
 

@@ -62,6 +62,22 @@ capi.crgOdrEvalxy2normal.argtypes = [ctypes.c_int, D, D, P(D), P(D), P(D)]
 capi.crgOdrEvalst2xyz.argtypes = [ctypes.c_int, ctypes.c_int, D, D, P(D), P(D), P(D)]
 
 
+def road_xy(path):
+    """A function of (s, t) giving the x/y of the CRG file's u = (s - 90) * 0.3, v = t (through
+    the C API's u/v to x/y after the modifiers): s 87 to 170 runs over u -1 to 23."""
+    data = capi.crgLoaderReadFile(str(path).encode())
+    capi.crgDataSetModifiersApply(data)
+    cp = capi.crgContactPointCreate(data)
+    capi.crgEvaluv2xy.argtypes = [ctypes.c_int, D, D, P(D), P(D)]
+    x, y = D(), D()
+
+    def xy_of(s, t):
+        capi.crgEvaluv2xy(cp, (s - 90.0) * 0.3, t, ctypes.byref(x), ctypes.byref(y))
+        return x.value, y.value
+
+    return xy_of
+
+
 def crg_oracle(path):
     """A function of (x, y) giving the CRG file's answers as the FMU documents them."""
     data = capi.crgLoaderReadFile(str(path).encode())
@@ -215,19 +231,8 @@ def test_crg_file_answers_as_the_c_api(work, fmi):
     fmu = pack(road, work / f"crg{fmi}.fmu", fmi)
     assert validate_fmu(str(fmu)) == []
     probe = crg_oracle(road)
-    # The path along the road's own u/v (through the C API's u/v to x/y).
-    data = capi.crgLoaderReadFile(str(road).encode())
-    capi.crgDataSetModifiersApply(data)
-    cp = capi.crgContactPointCreate(data)
-    capi.crgEvaluv2xy.argtypes = [ctypes.c_int, D, D, P(D), P(D)]
-    x, y = D(), D()
-
-    def xy_of(s, t):
-        # s 87 to 170 over u -1 to 23 (the road's 0 to 22 and a little beyond), t across.
-        capi.crgEvaluv2xy(cp, (s - 90.0) * 0.3, t, ctypes.byref(x), ctypes.byref(y))
-        return x.value, y.value
-
-    table = wheel_path(xy_of)
+    # The path along the road's own u/v (the road's 0 to 22 and a little beyond).
+    table = wheel_path(road_xy(road))
     quantities = ["x", "y", "z", "u", "v", "heading", "curvature", "onRoad", "nx", "ny", "nz", "friction"]
     outputs = [f"wheel[{i}].{q}" for i in range(1, WHEELS + 1) for q in quantities]
     compared = 0
@@ -425,17 +430,7 @@ def test_a_road_left_outside_the_fmu_is_read_in_place_where_it_lies(work, fmi, m
     start = {v.name: v.start for v in md.modelVariables}
     assert start["roadFile"] == str(road.resolve())
     probe = crg_oracle(road)
-    data = capi.crgLoaderReadFile(str(road).encode())
-    capi.crgDataSetModifiersApply(data)
-    cp = capi.crgContactPointCreate(data)
-    capi.crgEvaluv2xy.argtypes = [ctypes.c_int, D, D, P(D), P(D)]
-    x, y = D(), D()
-
-    def xy_of(s, t):
-        capi.crgEvaluv2xy(cp, (s - 90.0) * 0.3, t, ctypes.byref(x), ctypes.byref(y))
-        return x.value, y.value
-
-    table = wheel_path(xy_of, n=60)
+    table = wheel_path(road_xy(road), n=60)
     outputs = [f"wheel[{i}].{q}" for i in range(1, WHEELS + 1) for q in ("x", "y", "z", "u", "v")]
 
     def answers_as_the_c_api(result):
