@@ -269,13 +269,15 @@ impl Wheel {
         (a.known, a.normal, a.pk) = (true, None, None);
         (a.on_road, a.answered, a.located, a.z, a.road, a.lane) = (false, false, false, 0.0, -1, 0);
         match &mut self.evaluator {
+            // Not a place: no search (its u and v would not be finite).
+            Evaluator::Crg(_) if !(x.is_finite() && y.is_finite()) => (a.friction, a.a, a.b) = (f64::NAN, 0.0, 0.0),
             Evaluator::Crg(cp) => {
                 a.friction = f64::NAN;
                 match cp.xy_to_uv(x, y) {
                     Ok((u, v)) => {
                         (a.located, a.a, a.b) = (true, u, v);
                         if let Ok(z) = cp.z_of_found(u, v) {
-                            if z.is_finite() && x.is_finite() && y.is_finite() {
+                            if z.is_finite() {
                                 let ((u0, u1), (v0, v1)) = ranges.unwrap_or(((u, u), (v, v)));
                                 a.on_road = (u0..=u1).contains(&u) && (v0..=v1).contains(&v);
                                 (a.answered, a.z) = (true, z);

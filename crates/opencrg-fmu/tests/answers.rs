@@ -103,7 +103,18 @@ fn off_the_road_and_bad_input_give_the_documented_values() {
     let mut wheels =
         Wheels::new(&crg, 1, (0.0, 0.0), &[(opencrg_core::settings::opt::BORDER_MODE_U, opencrg_core::Value::Int(0))])
             .unwrap();
+    for (x, y) in [(f64::NAN, 0.0), (0.0, f64::INFINITY), (f64::NEG_INFINITY, 1.0), (f64::INFINITY, f64::NAN)] {
+        wheels.set(0, Quantity::X, x);
+        wheels.set(0, Quantity::Y, y);
+        assert!(!wheels.on_road(0), "({x}, {y})");
+        let values = [Quantity::Z, Quantity::Friction, Quantity::Nx, Quantity::Ny, Quantity::Nz]
+            .map(|q| wheels.real(0, q, 0.7))
+            .into_iter()
+            .chain([Quantity::U, Quantity::V, Quantity::Heading, Quantity::Curvature].map(|q| wheels.real(0, q, 0.7)));
+        assert_eq!(values.collect::<Vec<_>>(), [0.0, 0.7, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0], "({x}, {y})");
+    }
     wheels.set(0, Quantity::X, -50.0);
+    wheels.set(0, Quantity::Y, 0.0);
     assert!(!wheels.on_road(0));
     assert_eq!(wheels.real(0, Quantity::Z, 1.0), 0.0, "refused beyond the border with border mode none");
     assert_eq!(wheels.real(0, Quantity::Friction, 0.8), 0.8);
