@@ -172,6 +172,13 @@ int main(int argc, char **argv)
     d = -1.0;
     CHECK(crgContactPointOptionGetDouble(cp, dCrgCpOptionBorderModeU, &d) == 1 && d == 0.0);
     CHECK(crgContactPointOptionSetInt(cp + 100, dCrgCpOptionBorderModeU, 1) == 0);
+    /* A choice out of range is kept, as the reference keeps it, with the warning whose
+       text the other bindings refuse it with. */
+    g_messages = 0;
+    CHECK(crgContactPointOptionSetInt(cp, dCrgCpOptionBorderModeV, 99) == 1);
+    CHECK(g_messages == 1 && strstr(g_last, "<border mode v> = 99 is not one of its choices 0 to 4") != NULL);
+    CHECK(crgContactPointOptionGetInt(cp, dCrgCpOptionBorderModeV, &i) == 1 && i == 99);
+    CHECK(crgContactPointOptionSetInt(cp, dCrgCpOptionBorderModeV, dCrgBorderModeExKeep) == 1 && g_messages == 1);
     CHECK(crgContactPointOptionGetInt(-1, dCrgCpOptionBorderModeU, &i) == 0);
     g_messages = 0;
     crgContactPointOptionsPrint(cp);

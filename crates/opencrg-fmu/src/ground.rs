@@ -171,9 +171,8 @@ impl Wheels {
                         if removes {
                             cp.remove_option(id);
                         } else {
-                            cp.set_option_value(id, value).map_err(|e| {
-                                Error::out_of_range(format!("{} = {}: {e}", Parameter::Option(id).name(), shown(value)))
-                            })?;
+                            // Refused with the message of the C API's setter, which names the option.
+                            cp.set_option_value(id, value)?;
                         }
                     }
                     Evaluator::Crg(cp)
@@ -352,13 +351,6 @@ impl Wheel {
         let pk = pk.filter(|(p, k)| p.is_finite() && k.is_finite()).unwrap_or((0.0, 0.0));
         self.answer.pk = Some(pk);
         pk
-    }
-}
-
-fn shown(value: Value) -> String {
-    match value {
-        Value::Int(i) => i.to_string(),
-        Value::Double(d) => d.to_string(),
     }
 }
 

@@ -5,7 +5,7 @@ use crate::data_sets::{get_double, get_int, print_settings};
 use crate::entry::answer;
 use crate::ptr::out;
 use crate::registry;
-use opencrg_core::settings::{describe, name, Family, Kind};
+use opencrg_core::settings::{self, describe, name, Family, Kind, Value};
 use std::ffi::{c_int, c_uint};
 
 /// Creates a contact point on a data set; its id (>= 0) or -1.
@@ -32,11 +32,17 @@ pub extern "C" fn crgContactPointDeleteAll(dataSetId: c_int) {
     answer!((), |_| registry::delete_cps_of((dataSetId != -1).then_some(dataSetId)))
 }
 
-/// Sets an integer option of a contact point.
+/// Sets an integer option of a contact point. An integer that is not one of the
+/// option's choices is kept, as the reference library keeps it, with a warning.
 #[no_mangle]
 pub extern "C" fn crgContactPointOptionSetInt(cpId: c_int, optionId: c_uint, optionValue: c_int) -> c_int {
-    answer!(0, |call| match call.on_cp(cpId, |cp| cp.set_option_int(optionId, optionValue)) {
-        Some(r) => call.done(r),
+    answer!(0, |call| match call.on_cp(cpId, |cp| cp.set_option_int_as_reference(optionId, optionValue)) {
+        Some(r) => {
+            if let (Ok(()), Err(e)) = (&r, settings::check(optionId, Value::Int(optionValue))) {
+                call.warn(&format!("{}: {e}; kept, as the reference library keeps it", call.name()));
+            }
+            call.done(r)
+        }
         None => 0,
     })
 }

@@ -54,6 +54,9 @@ const some = cp.uvToZ(new Float64Array([10, -10, 20]), new Float64Array([0, 0, 0
 assert.ok(!Number.isNaN(some[0]) && Number.isNaN(some[1]) && !Number.isNaN(some[2]));
 assert.deepEqual([...cp.refused], [0, 1, 0]);
 assert.throws(() => new ContactPoint(road, { BORDER_MODE_W: 1 }), /unknown option 'BORDER_MODE_W'/);
+// A choice out of range: refused with the C API's message (Python and the FMU say the same).
+assert.throws(() => new ContactPoint(road, { BORDER_MODE_V: 99 }), { message: '<border mode v> = 99 is not one of its choices 0 to 4' });
+assert.throws(() => cp.setOption('refline_continuation', -1), { message: '<refline continuation mode> = -1 is not one of its choices 0 to 1' });
 assert.throws(() => road.setModifier('SCALE_Q', 1), /unknown modifier 'SCALE_Q'/);
 road.setModifier('scale_z_grid', 2);
 assert.throws(() => road.uvToZ([1, 2], [1]), /u has 2 values, v 1/);

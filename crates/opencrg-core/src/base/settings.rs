@@ -303,6 +303,23 @@ pub fn describe(id: u32) -> Option<(Family, Kind)> {
     info(id).map(|s| (s.family, s.kind))
 }
 
+/// Whether setting `id` accepts `value` by the table's rule (a choice among its
+/// choices, a number greater than zero where one is needed): the one check, and its
+/// message, every binding refuses a value with. The C API's setters keep an integer
+/// that is not a choice, as the reference library keeps it, and warn with this message.
+pub fn check(id: u32, value: Value) -> Result<(), SettingError> {
+    let Some(s) = info(id) else { return Ok(()) };
+    match (s.accepts, value) {
+        (Accepts::Choice { max }, Value::Int(v)) if !(0..=max).contains(&v) => {
+            Err(SettingError::NotAChoice { name: s.name, value: v, max })
+        }
+        (Accepts::Positive, Value::Double(v)) if !(v > 0.0) => {
+            Err(SettingError::Refused { name: s.name, value: v, why: "must be greater than zero" })
+        }
+        _ => Ok(()),
+    }
+}
+
 /// A short human-readable name of a setting, used in messages and printouts.
 pub fn name(id: u32) -> &'static str {
     info(id).map_or("unknown", |s| s.name)
@@ -334,6 +351,15 @@ pub enum SettingError {
         /// "integer" or "double".
         expected: &'static str,
     },
+    /// An integer that is not one of the setting's choices.
+    NotAChoice {
+        /// The setting's name.
+        name: &'static str,
+        /// The value given.
+        value: i32,
+        /// The largest choice.
+        max: i32,
+    },
     /// The value is outside what the setting accepts.
     Refused {
         /// The setting's name.
@@ -350,6 +376,9 @@ impl std::fmt::Display for SettingError {
         match self {
             SettingError::UnknownId { id, family } => write!(f, "{id} is not a known {family} identifier"),
             SettingError::WrongType { name, expected } => write!(f, "setting <{name}> takes {expected} values"),
+            SettingError::NotAChoice { name, value, max } => {
+                write!(f, "<{name}> = {value} is not one of its choices 0 to {max}")
+            }
             SettingError::Refused { name, value, why } => write!(f, "value {value} for <{name}> is refused: {why}"),
         }
     }
@@ -435,9 +464,7 @@ impl Settings {
         if kind != Kind::Double {
             return Err(SettingError::WrongType { name, expected: "integer" });
         }
-        if info(id).is_some_and(|s| s.accepts == Accepts::Positive) && !(value > 0.0) {
-            return Err(SettingError::Refused { name, value, why: "must be greater than zero" });
-        }
+        check(id, Value::Double(value))?;
         self.slots[id as usize] = Some(Value::Double(value));
         Ok(())
     }
@@ -503,6 +530,24 @@ impl Settings {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_choice_is_checked_by_its_range() {
+        let mut choices = 0;
+        for s in SETTINGS {
+            if let Accepts::Choice { max } = s.accepts {
+                choices += 1;
+                assert!((0..=max).all(|v| check(s.id, Value::Int(v)).is_ok()), "{}", s.name);
+                for v in [-1, max + 1, i32::MIN, i32::MAX] {
+                    let e = check(s.id, Value::Int(v)).unwrap_err().to_string();
+                    assert_eq!(e, format!("<{}> = {v} is not one of its choices 0 to {max}", s.name));
+                }
+            }
+        }
+        assert!(choices >= 4, "{choices}");
+        assert!(check(opt::SMOOTH_U_END, Value::Double(0.0)).is_err());
+        assert!(check(opt::BORDER_OFFSET_U, Value::Double(-5.0)).is_ok());
+    }
 
     #[test]
     fn types_are_enforced() {

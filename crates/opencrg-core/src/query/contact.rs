@@ -142,8 +142,17 @@ impl ContactPoint {
         r
     }
 
-    /// Sets an integer option.
+    /// Sets an integer option; refused: an integer that is not one of the option's
+    /// choices ([`settings::check`](crate::settings::check)).
     pub fn set_option_int(&mut self, id: u32, value: i32) -> Result<()> {
+        crate::base::settings::check(id, crate::base::settings::Value::Int(value))?;
+        self.set_option_int_as_reference(id, value)
+    }
+
+    /// Sets an integer option as the reference library sets it: any integer, a choice
+    /// out of range then evaluating as the reference's evaluation takes it (the C API's
+    /// setter, for the programs written for the reference).
+    pub fn set_option_int_as_reference(&mut self, id: u32, value: i32) -> Result<()> {
         Ok(self.edit_options(|o| o.set_int(id, value))?)
     }
 

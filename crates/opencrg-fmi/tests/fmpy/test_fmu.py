@@ -304,9 +304,15 @@ def test_a_get_after_a_set_answers_at_once_and_bad_calls_are_refused(work):
     with pytest.raises(Exception):
         slave.getReal([vr["wheel[1].z"]])
     assert any("fmi2GetReal" in m and "not allowed" in m for m in said), said
+    # A choice out of range: refused with the C API's message, the value kept as it was.
+    with pytest.raises(Exception):
+        slave.setInteger([vr["options.BORDER_MODE_V"]], [99])
+    assert any("<border mode v> = 99 is not one of its choices 0 to 4" in m for m in said), said
     slave.setupExperiment(startTime=0.0)
     slave.enterInitializationMode()
     slave.exitInitializationMode()
+    start = next(v.start for v in md.modelVariables if v.name == "options.BORDER_MODE_V")
+    assert slave.getInteger([vr["options.BORDER_MODE_V"]]) == [int(start)]
     probe = crg_oracle(work / "rough.crg")
     for x, y in ((231.0, 152.0), (235.0, 160.0), (232.0, 155.5)):
         slave.setReal([vr["wheel[2].x"], vr["wheel[2].y"]], [x, y])
@@ -315,6 +321,13 @@ def test_a_get_after_a_set_answers_at_once_and_bad_calls_are_refused(work):
     slave.setReal([vr["wheel[3].x"]], [float("nan")])
     assert slave.getBoolean([vr["wheel[3].onRoad"]]) == [False]
     assert slave.getReal([vr["wheel[3].z"], vr["wheel[3].nz"]]) == [0.0, 1.0]
+    # Infinite positions: finite outputs, off the road.
+    outputs = ["z", "u", "v", "nx", "ny", "nz", "heading", "curvature", "friction"]
+    for x, y in ((float("inf"), 150.0), (231.0, float("-inf")), (float("inf"), float("nan"))):
+        slave.setReal([vr["wheel[3].x"], vr["wheel[3].y"]], [x, y])
+        assert slave.getBoolean([vr["wheel[3].onRoad"]]) == [False]
+        got = slave.getReal([vr[f"wheel[3].{q}"] for q in outputs])
+        assert all(math.isfinite(g) for g in got), (x, y, got)
     said.clear()
     with pytest.raises(Exception):
         slave.getReal([99999])
