@@ -112,6 +112,13 @@ for profile in current 2.0.1; do
     [ "$result" = "232 passed, 0 failed" ]
 done
 OPENCRG_CLI="$PWD/target/release/opencrg" node packaging/npm/test/api.mjs target/wasm-dist/package examples/data
+# The package's types against a program using every documented call (TypeScript from the
+# npm registry), compiled beside the package's index.d.ts.
+npm install --silent --no-save --prefix target/tsc "typescript@5" >/dev/null
+cp packaging/npm/test/types.ts target/wasm-dist/package/types_check.ts
+(cd target/wasm-dist/package && ../../tsc/node_modules/.bin/tsc --strict --noEmit --module nodenext \
+    --moduleResolution nodenext --target es2022 types_check.ts && rm types_check.ts)
+echo "npm package types: every documented call type-checks (tsc --strict)"
 OPENCRG_CLI="$PWD/target/release/opencrg" node packaging/npm/test/map.mjs target/wasm-dist/package ../shared/opendrive target/wasm-maps
 node packaging/npm/test/guide.mjs target/wasm-dist/package . target/wasm-guide
 python3 packaging/web/test_page.py target/wasm-dist/web target/release/opencrg examples/data

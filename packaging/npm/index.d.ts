@@ -4,6 +4,8 @@
 export type Coordinates = number | Float64Array | ArrayLike<number>;
 /** An answer per point: a number for numbers given, a `Float64Array` for arrays. */
 export type Answer<T extends Coordinates> = T extends number ? number : Float64Array;
+/** The second coordinate: a number with a number, an array of the same length with an array. */
+export type Like<T extends Coordinates> = T extends number ? number : ArrayLike<number>;
 /** Contact point options or modifiers by the file's keywords, in any case. */
 export type Settings = Record<string, number>;
 
@@ -56,14 +58,17 @@ export class Road {
   viewPage(name: string, maxVertices?: number): string;
   /** What `opencrg info` says of the road, the file named `name`. */
   info(name: string): string;
-  uvToZ<T extends Coordinates>(u: T, v: T, options?: Settings): Answer<T>;
-  xyToZ<T extends Coordinates>(x: T, y: T, options?: Settings): Answer<T>;
-  uvToXy<T extends Coordinates>(u: T, v: T, options?: Settings): [Answer<T>, Answer<T>];
-  xyToUv<T extends Coordinates>(x: T, y: T, options?: Settings): [Answer<T>, Answer<T>];
-  uvToPk<T extends Coordinates>(u: T, v: T, options?: Settings): [Answer<T>, Answer<T>];
-  xyToPk<T extends Coordinates>(x: T, y: T, options?: Settings): [Answer<T>, Answer<T>];
+  uvToZ<T extends Coordinates>(u: T, v: Like<T>, options?: Settings): Answer<T>;
+  xyToZ<T extends Coordinates>(x: T, y: Like<T>, options?: Settings): Answer<T>;
+  uvToXy<T extends Coordinates>(u: T, v: Like<T>, options?: Settings): [Answer<T>, Answer<T>];
+  xyToUv<T extends Coordinates>(x: T, y: Like<T>, options?: Settings): [Answer<T>, Answer<T>];
+  uvToPk<T extends Coordinates>(u: T, v: Like<T>, options?: Settings): [Answer<T>, Answer<T>];
+  xyToPk<T extends Coordinates>(x: T, y: Like<T>, options?: Settings): [Answer<T>, Answer<T>];
   /** `[z, nx, ny, nz]`: the elevation and the upward unit normal. */
-  uvToNormal<T extends Coordinates>(u: T, v: T, options?: Settings): [Answer<T>, Answer<T>, Answer<T>, Answer<T>];
+  uvToNormal<T extends Coordinates>(u: T, v: Like<T>, options?: Settings): [Answer<T>, Answer<T>, Answer<T>, Answer<T>];
+  xyToNormal<T extends Coordinates>(x: T, y: Like<T>, options?: Settings): [Answer<T>, Answer<T>, Answer<T>, Answer<T>];
+  /** Evaluation `index` of `evaluations()` (what the calls above call). */
+  evaluate(index: number, a: Coordinates, b: Coordinates, options?: Settings): number | Float64Array | Array<number | Float64Array>;
   free(): void;
 }
 
@@ -74,13 +79,16 @@ export class ContactPoint {
   readonly options: Settings;
   /** 1 for each point of the last call without an answer: refused (the C API's return code 0) for a number, answered NaN for arrays. */
   readonly refused: Uint8Array;
-  uvToZ<T extends Coordinates>(u: T, v: T): Answer<T>;
-  xyToZ<T extends Coordinates>(x: T, y: T): Answer<T>;
-  uvToXy<T extends Coordinates>(u: T, v: T): [Answer<T>, Answer<T>];
-  xyToUv<T extends Coordinates>(x: T, y: T): [Answer<T>, Answer<T>];
-  uvToPk<T extends Coordinates>(u: T, v: T): [Answer<T>, Answer<T>];
-  xyToPk<T extends Coordinates>(x: T, y: T): [Answer<T>, Answer<T>];
-  uvToNormal<T extends Coordinates>(u: T, v: T): [Answer<T>, Answer<T>, Answer<T>, Answer<T>];
+  uvToZ<T extends Coordinates>(u: T, v: Like<T>): Answer<T>;
+  xyToZ<T extends Coordinates>(x: T, y: Like<T>): Answer<T>;
+  uvToXy<T extends Coordinates>(u: T, v: Like<T>): [Answer<T>, Answer<T>];
+  xyToUv<T extends Coordinates>(x: T, y: Like<T>): [Answer<T>, Answer<T>];
+  uvToPk<T extends Coordinates>(u: T, v: Like<T>): [Answer<T>, Answer<T>];
+  xyToPk<T extends Coordinates>(x: T, y: Like<T>): [Answer<T>, Answer<T>];
+  uvToNormal<T extends Coordinates>(u: T, v: Like<T>): [Answer<T>, Answer<T>, Answer<T>, Answer<T>];
+  xyToNormal<T extends Coordinates>(x: T, y: Like<T>): [Answer<T>, Answer<T>, Answer<T>, Answer<T>];
+  /** Evaluation `index` of `evaluations()` (what the calls above call). */
+  evaluate(index: number, a: Coordinates, b: Coordinates): number | Float64Array | Array<number | Float64Array>;
   free(): void;
 }
 
@@ -100,9 +108,9 @@ export class OdrMap {
   private constructor();
   /** Reads a map held in memory with its CRG files (`{name: bytes}`). */
   static fromBytes(bytes: Uint8Array, files?: Record<string, Uint8Array>, name?: string): OdrMap;
-  ground<T extends Coordinates>(x: T, y: T): Ground<T>;
-  normal<T extends Coordinates>(x: T, y: T): [Answer<T>, Answer<T>, Answer<T>];
-  stToXyz<T extends Coordinates>(road: string, s: T, t: T): [Answer<T>, Answer<T>, Answer<T>];
+  ground<T extends Coordinates>(x: T, y: Like<T>): Ground<T>;
+  normal<T extends Coordinates>(x: T, y: Like<T>): [Answer<T>, Answer<T>, Answer<T>];
+  stToXyz<T extends Coordinates>(road: string, s: T, t: Like<T>): [Answer<T>, Answer<T>, Answer<T>];
   /** The checker's findings (empty when clean). */
   check(): string[];
   /** The 3D view of `opencrg odr view`: one HTML page. */
@@ -113,6 +121,10 @@ export class OdrMap {
   readonly roadLengths: Float64Array;
   free(): void;
 }
+
+/** The evaluation calls roads and contact points have, in the order `evaluate` takes
+ * them: each call's name and the names of the values it takes and gives per point. */
+export function evaluations(): Array<{ name: string; inputs: string[]; outputs: string[] }>;
 
 /** OpenDRIVE maps. */
 export const odr: { Map: typeof OdrMap };

@@ -84,8 +84,10 @@ const CONSTANTS: [(&str, i32); 12] = [
     ("GRID_NAN_KEEP_LAST", NanMode::KeepLast as i32),
 ];
 
-/// Adds the choice constants and the lists of option and modifier names.
+/// Adds the choice constants, the lists of option and modifier names and the evaluation
+/// calls' names (the core's list, which the methods of `Road` and `ContactPoint` follow).
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("EVALUATIONS", ::opencrg_core::Evaluation::ALL.map(::opencrg_core::Evaluation::name).to_vec())?;
     for (name, value) in CONSTANTS {
         m.add(name, value)?;
     }

@@ -360,3 +360,14 @@ def test_mesh_of_the_surface(road_file, opencrg_command, tmp_path):
         road.to_mesh(max_error=-1.0)
     with pytest.raises(ValueError, match="unknown mesh format"):
         road.write_mesh(tmp_path / "x.gltf")
+
+
+def test_every_evaluation_of_the_library_is_a_method_of_roads_and_contact_points(road_file):
+    road = opencrg.Road(road_file)
+    cp = opencrg.ContactPoint(road)
+    assert len(opencrg.EVALUATIONS) == 8
+    for name in opencrg.EVALUATIONS:
+        assert callable(getattr(road, name)) and callable(getattr(cp, name)), name
+    # xy_to_normal is uv_to_normal at the point's u/v.
+    u, v = road.xy_to_uv([20.0, 55.5], [3.0, -1.0])
+    assert same_bits(np.asarray(road.xy_to_normal([20.0, 55.5], [3.0, -1.0])), np.asarray(road.uv_to_normal(u, v)))

@@ -6,7 +6,6 @@ use crate::road::Road;
 use crate::settings;
 use js_sys::Uint8Array;
 use opencrg_core::settings::Family;
-use opencrg_core::Evaluation;
 use wasm_bindgen::prelude::*;
 
 /// A point of evaluation: its own options and x/y search history.
@@ -54,49 +53,9 @@ impl ContactPoint {
         Uint8Array::from(self.refused.as_slice())
     }
 
-    fn evaluate(&mut self, which: Evaluation, a: &JsValue, b: &JsValue) -> Result<JsValue, JsError> {
-        call(&mut self.cp, which, a, b, &mut self.refused)
-    }
-
-    /// Elevation at (u, v).
-    #[wasm_bindgen(js_name = uvToZ)]
-    pub fn uv_to_z(&mut self, u: &JsValue, v: &JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Evaluation::UvToZ, u, v)
-    }
-
-    /// Elevation at (x, y).
-    #[wasm_bindgen(js_name = xyToZ)]
-    pub fn xy_to_z(&mut self, x: &JsValue, y: &JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Evaluation::XyToZ, x, y)
-    }
-
-    /// `[x, y]` at (u, v).
-    #[wasm_bindgen(js_name = uvToXy)]
-    pub fn uv_to_xy(&mut self, u: &JsValue, v: &JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Evaluation::UvToXy, u, v)
-    }
-
-    /// `[u, v]` at (x, y).
-    #[wasm_bindgen(js_name = xyToUv)]
-    pub fn xy_to_uv(&mut self, x: &JsValue, y: &JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Evaluation::XyToUv, x, y)
-    }
-
-    /// `[heading, curvature]` at (u, v).
-    #[wasm_bindgen(js_name = uvToPk)]
-    pub fn uv_to_pk(&mut self, u: &JsValue, v: &JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Evaluation::UvToPk, u, v)
-    }
-
-    /// `[heading, curvature]` at (x, y).
-    #[wasm_bindgen(js_name = xyToPk)]
-    pub fn xy_to_pk(&mut self, x: &JsValue, y: &JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Evaluation::XyToPk, x, y)
-    }
-
-    /// `[z, nx, ny, nz]` at (u, v).
-    #[wasm_bindgen(js_name = uvToNormal)]
-    pub fn uv_to_normal(&mut self, u: &JsValue, v: &JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Evaluation::UvToNormal, u, v)
+    /// Evaluation `index` of `evaluations()` at the points (a, b): what the package's
+    /// `uvToZ`, `xyToNormal`, ... call.
+    pub fn evaluate(&mut self, index: usize, a: &JsValue, b: &JsValue) -> Result<JsValue, JsError> {
+        call(&mut self.cp, crate::evaluate::nth(index)?, a, b, &mut self.refused)
     }
 }

@@ -31,3 +31,52 @@ pub(crate) fn call(
     };
     Ok(if call.outputs() == 1 { p.one(columns.into_iter().next().unwrap_or_default()) } else { p.many(columns) })
 }
+
+/// The evaluation at `index` of the core's list.
+pub(crate) fn nth(index: usize) -> Result<Evaluation, JsError> {
+    Evaluation::ALL.get(index).copied().ok_or_else(|| JsError::new(&format!("no evaluation {index}")))
+}
+
+/// A snake-case name in camel case (`uv_to_z` -> `uvToZ`).
+fn camel(name: &str) -> String {
+    let mut out = String::with_capacity(name.len());
+    let mut upper = false;
+    for c in name.chars() {
+        match c {
+            '_' => upper = true,
+            c if upper => {
+                out.extend(c.to_uppercase());
+                upper = false;
+            }
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// The evaluations roads and contact points have, from the core's one list, in the
+/// order `evaluate` takes them: `[{name, inputs, outputs}]` (`uvToZ`, `["u", "v"]`,
+/// `["z"]`). The package's `index.js` makes a method of each.
+#[wasm_bindgen::prelude::wasm_bindgen]
+pub fn evaluations() -> js_sys::Array {
+    let strings = |names: &[&str]| names.iter().map(|n| JsValue::from_str(n)).collect::<js_sys::Array>();
+    Evaluation::ALL
+        .iter()
+        .map(|e| {
+            let o = js_sys::Object::new();
+            let _ = js_sys::Reflect::set(&o, &"name".into(), &camel(e.name()).into());
+            let _ = js_sys::Reflect::set(&o, &"inputs".into(), &strings(&e.inputs()).into());
+            let _ = js_sys::Reflect::set(&o, &"outputs".into(), &strings(e.output_names()).into());
+            JsValue::from(o)
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn names_are_camel_cased() {
+        assert_eq!(super::camel("uv_to_z"), "uvToZ");
+        assert_eq!(super::camel("xy_to_normal"), "xyToNormal");
+    }
+}

@@ -14,5 +14,6 @@ mod settings;
 mod values;
 
 pub use contact::ContactPoint;
+pub use evaluate::evaluations;
 pub use map::Map;
 pub use road::{iso8608_classes, Road};

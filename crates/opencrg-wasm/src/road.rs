@@ -5,7 +5,6 @@ use crate::evaluate::call;
 use crate::settings;
 use js_sys::{Array, Float32Array, Object, Reflect, Uint8Array};
 use opencrg_core::settings::Family;
-use opencrg_core::Evaluation;
 use opencrg_core::{Compat, ContactPoint};
 use std::sync::Arc;
 use wasm_bindgen::prelude::*;
@@ -26,10 +25,6 @@ impl Road {
             cp.set_option_value(id, value).map_err(crate::errors::error)?;
         }
         Ok(cp)
-    }
-
-    fn evaluate(&self, which: Evaluation, a: &JsValue, b: &JsValue, options: &JsValue) -> Result<JsValue, JsError> {
-        call(&mut self.contact_point(options)?, which, a, b, &mut Vec::new())
     }
 }
 
@@ -234,46 +229,11 @@ impl Road {
         opencrg_core::info::text(&self.road, name)
     }
 
-    /// Elevation at (u, v); `options`: contact point options for this call.
-    #[wasm_bindgen(js_name = uvToZ)]
-    pub fn uv_to_z(&self, u: &JsValue, v: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Evaluation::UvToZ, u, v, &options)
-    }
-
-    /// Elevation at (x, y).
-    #[wasm_bindgen(js_name = xyToZ)]
-    pub fn xy_to_z(&self, x: &JsValue, y: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Evaluation::XyToZ, x, y, &options)
-    }
-
-    /// `[x, y]` at (u, v).
-    #[wasm_bindgen(js_name = uvToXy)]
-    pub fn uv_to_xy(&self, u: &JsValue, v: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Evaluation::UvToXy, u, v, &options)
-    }
-
-    /// `[u, v]` at (x, y).
-    #[wasm_bindgen(js_name = xyToUv)]
-    pub fn xy_to_uv(&self, x: &JsValue, y: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Evaluation::XyToUv, x, y, &options)
-    }
-
-    /// `[heading, curvature]` at (u, v).
-    #[wasm_bindgen(js_name = uvToPk)]
-    pub fn uv_to_pk(&self, u: &JsValue, v: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Evaluation::UvToPk, u, v, &options)
-    }
-
-    /// `[heading, curvature]` at (x, y).
-    #[wasm_bindgen(js_name = xyToPk)]
-    pub fn xy_to_pk(&self, x: &JsValue, y: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Evaluation::XyToPk, x, y, &options)
-    }
-
-    /// `[z, nx, ny, nz]` at (u, v): the elevation and the upward unit normal.
-    #[wasm_bindgen(js_name = uvToNormal)]
-    pub fn uv_to_normal(&self, u: &JsValue, v: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
-        self.evaluate(Evaluation::UvToNormal, u, v, &options)
+    /// Evaluation `index` of `evaluations()` at the points (a, b), with contact point
+    /// `options` for this call: what the package's `uvToZ`, `xyToNormal`, ... call.
+    pub fn evaluate(&self, index: usize, a: &JsValue, b: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
+        let mut cp = self.contact_point(&options)?;
+        call(&mut cp, crate::evaluate::nth(index)?, a, b, &mut Vec::new())
     }
 }
 

@@ -10,7 +10,7 @@ import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 
 const [pkg, examples] = process.argv.slice(2);
-const { Road, ContactPoint, iso8608Classes, odr } = await import(pathToFileURL(join(pkg, 'index.js')).href);
+const { Road, ContactPoint, evaluations, iso8608Classes, odr } = await import(pathToFileURL(join(pkg, 'index.js')).href);
 const cli = (args, input) => execFileSync(process.env.OPENCRG_CLI, args, { input, encoding: 'utf8' });
 const bytes = readFileSync(join(examples, 'demo_road.crg'));
 
@@ -43,6 +43,23 @@ rows.forEach(([, , cx, cy, cz], i) => {
   close(y[i], cy);
   close(z[i], cz);
 });
+
+// Every evaluation of the library's list is a method of roads and contact points, declared
+// in the types of both.
+const types = readFileSync(join(pkg, 'index.d.ts'), 'utf8');
+assert.equal(evaluations().length, 8);
+for (const { name, inputs, outputs } of evaluations()) {
+  assert.equal(typeof Road.prototype[name], 'function', name);
+  assert.equal(typeof ContactPoint.prototype[name], 'function', name);
+  assert.equal(types.split(`  ${name}<T extends Coordinates>(${inputs[0]}: T, ${inputs[1]}: Like<T>`).length, 3, name);
+  const answer = road[name](10.5, 0.25);
+  assert.equal(outputs.length === 1 ? typeof answer : answer.length, outputs.length === 1 ? 'number' : outputs.length, name);
+}
+// xyToNormal: uvToNormal at the point's u/v.
+for (const [px, py] of [[20, 3], [55.5, -1], [100, 1.5]]) {
+  const [pu, pv] = road.xyToUv(px, py);
+  assert.deepEqual(road.xyToNormal(px, py), road.uvToNormal(pu, pv));
+}
 
 // Options by keyword in any case; a refusal is NaN, and `refused` says which.
 const cp = new ContactPoint(road, { border_mode_u: 0, Border_Mode_V: 0 });

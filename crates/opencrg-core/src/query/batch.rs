@@ -165,13 +165,55 @@ pub enum Evaluation {
 }
 
 impl Evaluation {
+    /// Every evaluation, in the order the bindings list them.
+    pub const ALL: [Evaluation; 8] = [
+        Evaluation::UvToZ,
+        Evaluation::XyToZ,
+        Evaluation::UvToXy,
+        Evaluation::XyToUv,
+        Evaluation::UvToPk,
+        Evaluation::XyToPk,
+        Evaluation::UvToNormal,
+        Evaluation::XyToNormal,
+    ];
+
+    /// Its name in snake case (`uv_to_z`); each binding spells it in its language's case.
+    pub fn name(self) -> &'static str {
+        match self {
+            Evaluation::UvToZ => "uv_to_z",
+            Evaluation::XyToZ => "xy_to_z",
+            Evaluation::UvToXy => "uv_to_xy",
+            Evaluation::XyToUv => "xy_to_uv",
+            Evaluation::UvToPk => "uv_to_pk",
+            Evaluation::XyToPk => "xy_to_pk",
+            Evaluation::UvToNormal => "uv_to_normal",
+            Evaluation::XyToNormal => "xy_to_normal",
+        }
+    }
+
+    /// The names of the values it takes per point.
+    pub fn inputs(self) -> [&'static str; 2] {
+        if self.takes_xy() {
+            ["x", "y"]
+        } else {
+            ["u", "v"]
+        }
+    }
+
+    /// The names of the values it gives per point.
+    pub fn output_names(self) -> &'static [&'static str] {
+        match self {
+            Evaluation::UvToZ | Evaluation::XyToZ => &["z"],
+            Evaluation::UvToXy => &["x", "y"],
+            Evaluation::XyToUv => &["u", "v"],
+            Evaluation::UvToPk | Evaluation::XyToPk => &["heading", "curvature"],
+            Evaluation::UvToNormal | Evaluation::XyToNormal => &["z", "nx", "ny", "nz"],
+        }
+    }
+
     /// The values it gives per point.
     pub fn outputs(self) -> usize {
-        match self {
-            Evaluation::UvToZ | Evaluation::XyToZ => 1,
-            Evaluation::UvToXy | Evaluation::XyToUv | Evaluation::UvToPk | Evaluation::XyToPk => 2,
-            Evaluation::UvToNormal | Evaluation::XyToNormal => 4,
-        }
+        self.output_names().len()
     }
 
     /// Whether it takes x/y (else u/v).

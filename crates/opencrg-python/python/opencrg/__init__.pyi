@@ -12,6 +12,7 @@ __version__: str
 
 OPTIONS: list[str]
 MODIFIERS: list[str]
+EVALUATIONS: list[str]
 
 ISO8608_N0: float
 ISO8608_LIMITS: list[float]
