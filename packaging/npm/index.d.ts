@@ -132,3 +132,20 @@ export const odr: { Map: typeof OdrMap };
 /** The ISO 8608 road classes roughness is classified by: the reference spatial frequency
  * n0 (cycles/m), the limits of Gd(n0) between the classes (m³), the classes' letters. */
 export function iso8608Classes(): { n0: number; limits: number[]; classes: string };
+
+/** Base of what the library throws (each an `Error` whose `name` is its class's). */
+export class CrgError extends Error {}
+/** A file that does not exist (a `$ROAD_CRG_FILE` reference, a map's CRG file). */
+export class NotFoundError extends CrgError {}
+/** A file that could not be read. */
+export class IoError extends CrgError {}
+/** A file whose content is wrong; the message names the file, line and field. */
+export class FormatError extends CrgError {}
+/** A road refused by `check()`. */
+export class CheckError extends CrgError {}
+/** A request refused before any work: an argument the call does not take. */
+export class RequestError extends CrgError {}
+/** A request beyond the memory limit. */
+export class TooLargeError extends RequestError {}
+/** A value the request does not take (an option's choice out of range, a modifier refused). */
+export class OutOfRangeError extends RequestError {}

@@ -22,6 +22,45 @@ evaluations().forEach(({ name }, index) => {
   };
 });
 
+// What the library throws: Errors whose `name` is one of these classes' (as Python's
+// exception classes): a file that is not found or not read, a file's content, a failed
+// check, a request refused (too large for the memory limit, a value out of range).
+const parent = {
+  CrgError: null,
+  NotFoundError: 'CrgError',
+  IoError: 'CrgError',
+  FormatError: 'CrgError',
+  CheckError: 'CrgError',
+  RequestError: 'CrgError',
+  TooLargeError: 'RequestError',
+  OutOfRangeError: 'RequestError',
+};
+const isKind = (name, kind) => {
+  for (let n = name; n; n = parent[n]) if (n === kind) return true;
+  return false;
+};
+const errorClass = (kind) => {
+  const c = class extends Error {
+    constructor(message) {
+      super(message);
+      this.name = kind;
+    }
+    static [Symbol.hasInstance](e) {
+      return e instanceof Error && isKind(e.name, kind);
+    }
+  };
+  Object.defineProperty(c, 'name', { value: kind });
+  return c;
+};
+export const CrgError = errorClass('CrgError');
+export const NotFoundError = errorClass('NotFoundError');
+export const IoError = errorClass('IoError');
+export const FormatError = errorClass('FormatError');
+export const CheckError = errorClass('CheckError');
+export const RequestError = errorClass('RequestError');
+export const TooLargeError = errorClass('TooLargeError');
+export const OutOfRangeError = errorClass('OutOfRangeError');
+
 export { ContactPoint, Road, evaluations, iso8608Classes };
 /** OpenDRIVE maps with CRG surfaces. */
 export const odr = { Map: OdrMap };

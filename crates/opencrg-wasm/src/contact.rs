@@ -1,6 +1,7 @@
 //! `ContactPoint`: a road with options of its own and an x/y search history, its calls
 //! made point by point in order, as the C API's.
 
+use crate::errors::Thrown;
 use crate::evaluate::call;
 use crate::road::Road;
 use crate::settings;
@@ -20,13 +21,13 @@ impl ContactPoint {
     /// A contact point on `road` with the road's options and `options` on top
     /// (`{BORDER_MODE_U: 0, CURV_MODE: 1, ...}`: the file's keywords, any case).
     #[wasm_bindgen(constructor)]
-    pub fn new(road: &Road, options: JsValue) -> Result<ContactPoint, JsError> {
+    pub fn new(road: &Road, options: JsValue) -> Result<ContactPoint, Thrown> {
         Ok(ContactPoint { cp: road.contact_point(&options)?, refused: Vec::new() })
     }
 
     /// Sets one option by its keyword (any case).
     #[wasm_bindgen(js_name = setOption)]
-    pub fn set_option(&mut self, name: &str, value: f64) -> Result<(), JsError> {
+    pub fn set_option(&mut self, name: &str, value: f64) -> Result<(), Thrown> {
         let mut table = self.cp.options().clone();
         settings::set(&mut table, Family::Option, name, value)?;
         let info = settings::lookup(Family::Option, name)?;
@@ -55,7 +56,7 @@ impl ContactPoint {
 
     /// Evaluation `index` of `evaluations()` at the points (a, b): what the package's
     /// `uvToZ`, `xyToNormal`, ... call.
-    pub fn evaluate(&mut self, index: usize, a: &JsValue, b: &JsValue) -> Result<JsValue, JsError> {
+    pub fn evaluate(&mut self, index: usize, a: &JsValue, b: &JsValue) -> Result<JsValue, Thrown> {
         call(&mut self.cp, crate::evaluate::nth(index)?, a, b, &mut self.refused)
     }
 }

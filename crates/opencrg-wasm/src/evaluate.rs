@@ -3,9 +3,10 @@
 //! through the evaluator's batch calls; in order on one contact point, NaN where a point
 //! is refused.
 
+use crate::errors::Thrown;
 use crate::values::Points;
 use opencrg_core::{ContactPoint, Evaluation};
-use wasm_bindgen::{JsError, JsValue};
+use wasm_bindgen::JsValue;
 
 /// `call` at the points `a`, `b`; `refused` holds 1 for each point the library refused
 /// (the C API's return code 0) where numbers were given, and for each point answered
@@ -16,7 +17,7 @@ pub(crate) fn call(
     a: &JsValue,
     b: &JsValue,
     refused: &mut Vec<u8>,
-) -> Result<JsValue, JsError> {
+) -> Result<JsValue, Thrown> {
     let names = if call.takes_xy() { ("x", "y") } else { ("u", "v") };
     let p = Points::new(a, b, names)?;
     refused.clear();
@@ -33,8 +34,8 @@ pub(crate) fn call(
 }
 
 /// The evaluation at `index` of the core's list.
-pub(crate) fn nth(index: usize) -> Result<Evaluation, JsError> {
-    Evaluation::ALL.get(index).copied().ok_or_else(|| JsError::new(&format!("no evaluation {index}")))
+pub(crate) fn nth(index: usize) -> Result<Evaluation, Thrown> {
+    Evaluation::ALL.get(index).copied().ok_or_else(|| Thrown::request(&format!("no evaluation {index}")))
 }
 
 /// A snake-case name in camel case (`uv_to_z` -> `uvToZ`).

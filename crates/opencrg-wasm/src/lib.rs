@@ -14,6 +14,7 @@ mod settings;
 mod values;
 
 pub use contact::ContactPoint;
+pub use errors::Thrown;
 pub use evaluate::evaluations;
 pub use map::Map;
 pub use road::{iso8608_classes, Road};

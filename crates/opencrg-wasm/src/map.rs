@@ -1,6 +1,7 @@
 //! `odr.Map`: an OpenDRIVE map read from bytes with the CRG files its records name, and
 //! the ground at world points.
 
+use crate::errors::Thrown;
 use crate::values::Points;
 use js_sys::{Array, Object, Reflect, Uint8Array};
 use opencrg_odr::{Map as OdrMap, Surface};
@@ -24,7 +25,7 @@ impl Map {
     /// of `files` (`{name: Uint8Array}`): a record takes the file named as its `file`
     /// attribute is written, else the one of the same last path component.
     #[wasm_bindgen(js_name = fromBytes)]
-    pub fn from_bytes(bytes: &[u8], files: JsValue, name: Option<String>) -> Result<Map, JsError> {
+    pub fn from_bytes(bytes: &[u8], files: JsValue, name: Option<String>) -> Result<Map, Thrown> {
         let name = name.unwrap_or_else(|| "map.xodr".into());
         let mut held = Vec::new();
         if let Some(object) = files.dyn_ref::<Object>() {
@@ -41,7 +42,7 @@ impl Map {
     /// The ground at world points: `{z, friction, road, lane, s, t}`, each a number or a
     /// `Float64Array` (NaN off every road; `road` is the index into `roadIds`, -1 off
     /// every road; friction NaN where neither a record nor the lane's material gives one).
-    pub fn ground(&self, x: &JsValue, y: &JsValue) -> Result<Object, JsError> {
+    pub fn ground(&self, x: &JsValue, y: &JsValue) -> Result<Object, Thrown> {
         let p = Points::new(x, y, ("x", "y"))?;
         let n = p.a.len();
         let mut columns = vec![vec![f64::NAN; n]; 4];
@@ -66,7 +67,7 @@ impl Map {
 
     /// The surface's upward unit normal at world points: `[nx, ny, nz]` (NaN off every
     /// road).
-    pub fn normal(&self, x: &JsValue, y: &JsValue) -> Result<JsValue, JsError> {
+    pub fn normal(&self, x: &JsValue, y: &JsValue) -> Result<JsValue, Thrown> {
         let p = Points::new(x, y, ("x", "y"))?;
         let mut columns: Vec<Vec<f64>> = (0..3).map(|_| Vec::with_capacity(p.a.len())).collect();
         let mut probe = self.surface.probe();
@@ -99,7 +100,7 @@ impl Map {
     /// The 3D view of `opencrg odr view` (one HTML page, the map named `name`), CRG
     /// records outlined, the surface within `maxError` m (default 5 mm).
     #[wasm_bindgen(js_name = viewPage)]
-    pub fn view_page(&self, name: &str, max_error: Option<f64>) -> Result<String, JsError> {
+    pub fn view_page(&self, name: &str, max_error: Option<f64>) -> Result<String, Thrown> {
         let options =
             opencrg_tools::map_mesh::MeshOptions { max_error: Some(max_error.unwrap_or(0.005)), ..Default::default() };
         let budget = opencrg_core::Budget::with_bytes(crate::limits::VIEW_MEMORY);
@@ -116,9 +117,12 @@ impl Map {
     /// The world point `[x, y, z]` of the surface at (s, t) of the road `road` (its
     /// id), CRG records laid on.
     #[wasm_bindgen(js_name = stToXyz)]
-    pub fn st_to_xyz(&self, road: &str, s: &JsValue, t: &JsValue) -> Result<JsValue, JsError> {
-        let index =
-            self.surface.map().road_index(road).ok_or_else(|| JsError::new(&format!("no road '{road}' in the map")))?;
+    pub fn st_to_xyz(&self, road: &str, s: &JsValue, t: &JsValue) -> Result<JsValue, Thrown> {
+        let index = self
+            .surface
+            .map()
+            .road_index(road)
+            .ok_or_else(|| Thrown::request(&format!("no road '{road}' in the map")))?;
         let p = Points::new(s, t, ("s", "t"))?;
         let mut columns: Vec<Vec<f64>> = (0..3).map(|_| Vec::with_capacity(p.a.len())).collect();
         let mut probe = self.surface.probe();

@@ -1,6 +1,7 @@
 //! `Road`: a CRG file read from bytes, checked, modified, and evaluated with default
 //! options (or those given with a call).
 
+use crate::errors::Thrown;
 use crate::evaluate::call;
 use crate::settings;
 use js_sys::{Array, Float32Array, Object, Reflect, Uint8Array};
@@ -17,7 +18,7 @@ pub struct Road {
 
 impl Road {
     /// A contact point with the road's options and `options` on top.
-    pub(crate) fn contact_point(&self, options: &JsValue) -> Result<ContactPoint, JsError> {
+    pub(crate) fn contact_point(&self, options: &JsValue) -> Result<ContactPoint, Thrown> {
         let mut cp = ContactPoint::new(self.road.clone());
         let mut table = cp.options().clone();
         settings::each(options, |name, value| settings::set(&mut table, Family::Option, name, value))?;
@@ -34,7 +35,7 @@ impl Road {
     /// `{compat: "2.0.1" | "current", files: {name: Uint8Array, ...}}`, the files its
     /// `$ROAD_CRG_FILE` references are read from. The modifiers are not applied yet.
     #[wasm_bindgen(js_name = fromBytes)]
-    pub fn from_bytes(bytes: &[u8], name: Option<String>, options: JsValue) -> Result<Road, JsError> {
+    pub fn from_bytes(bytes: &[u8], name: Option<String>, options: JsValue) -> Result<Road, Thrown> {
         let name = name.unwrap_or_else(|| "road.crg".into());
         let get = |key: &str| -> JsValue {
             if options.is_object() {
@@ -44,7 +45,7 @@ impl Road {
             }
         };
         let compat = match get("compat").as_string() {
-            Some(text) => text.parse::<Compat>().map_err(|e| JsError::new(&e.to_string()))?,
+            Some(text) => text.parse::<Compat>().map_err(|e| Thrown::request(&e.to_string()))?,
             None => Compat::default(),
         };
         let files = get("files");
@@ -62,7 +63,7 @@ impl Road {
     }
 
     /// Checks the road as `crgCheck` does; throws when it fails.
-    pub fn check(&mut self) -> Result<(), JsError> {
+    pub fn check(&mut self) -> Result<(), Thrown> {
         Arc::make_mut(&mut self.road).check().map_err(crate::errors::error)
     }
 
@@ -74,7 +75,7 @@ impl Road {
 
     /// Sets one modifier by its keyword (any case); it acts at the next `applyModifiers()`.
     #[wasm_bindgen(js_name = setModifier)]
-    pub fn set_modifier(&mut self, name: &str, value: f64) -> Result<(), JsError> {
+    pub fn set_modifier(&mut self, name: &str, value: f64) -> Result<(), Thrown> {
         settings::set(Arc::make_mut(&mut self.road).modifiers_mut(), Family::Modifier, name, value)
     }
 
@@ -177,7 +178,7 @@ impl Road {
     /// gdN0, w, iso8608, skipped}` (IRI in m/km over segments of `segment` m, default 100;
     /// a segment without data has iri `null`; `bands`: the displacement PSD as `[n, Gd(n)]`
     /// per third-octave band, cycles/m and m³).
-    pub fn roughness(&self, tracks: Option<Vec<f64>>, segment: Option<f64>) -> Result<Array, JsError> {
+    pub fn roughness(&self, tracks: Option<Vec<f64>>, segment: Option<f64>) -> Result<Array, Thrown> {
         let tracks = tracks.unwrap_or_else(|| opencrg_tools::roughness::DEFAULT_TRACKS.to_vec());
         let segment = segment.unwrap_or(opencrg_tools::roughness::DEFAULT_SEGMENT);
         let found = opencrg_tools::roughness::roughness(&self.road, &tracks, segment).map_err(crate::errors::error)?;
@@ -216,7 +217,7 @@ impl Road {
     /// cross section where the road has more than `max_vertices` grid nodes (default one
     /// million).
     #[wasm_bindgen(js_name = viewPage)]
-    pub fn view_page(&self, name: &str, max_vertices: Option<usize>) -> Result<String, JsError> {
+    pub fn view_page(&self, name: &str, max_vertices: Option<usize>) -> Result<String, Thrown> {
         let cp = ContactPoint::new(self.road.clone());
         let budget = opencrg_core::Budget::with_bytes(crate::limits::VIEW_MEMORY);
         opencrg_tools::view::road_view(&cp, name, None, None, max_vertices.unwrap_or(1_000_000), &budget)
@@ -231,7 +232,7 @@ impl Road {
 
     /// Evaluation `index` of `evaluations()` at the points (a, b), with contact point
     /// `options` for this call: what the package's `uvToZ`, `xyToNormal`, ... call.
-    pub fn evaluate(&self, index: usize, a: &JsValue, b: &JsValue, options: JsValue) -> Result<JsValue, JsError> {
+    pub fn evaluate(&self, index: usize, a: &JsValue, b: &JsValue, options: JsValue) -> Result<JsValue, Thrown> {
         let mut cp = self.contact_point(&options)?;
         call(&mut cp, crate::evaluate::nth(index)?, a, b, &mut Vec::new())
     }

@@ -1,8 +1,9 @@
 //! Points in and answers out: numbers or arrays (`Float64Array`, or any array of numbers)
 //! in, a number or a `Float64Array` out, pairs as two-element arrays.
 
+use crate::errors::Thrown;
 use js_sys::{Array, Float64Array};
-use wasm_bindgen::{JsCast, JsError, JsValue};
+use wasm_bindgen::{JsCast, JsValue};
 
 /// The points of two coordinates: numbers (one point) or arrays of one length.
 pub(crate) struct Points {
@@ -12,7 +13,7 @@ pub(crate) struct Points {
     pub scalar: bool,
 }
 
-fn numbers(value: &JsValue, what: &str) -> Result<(Vec<f64>, bool), JsError> {
+fn numbers(value: &JsValue, what: &str) -> Result<(Vec<f64>, bool), Thrown> {
     if let Some(x) = value.as_f64() {
         return Ok((vec![x], true));
     }
@@ -22,15 +23,15 @@ fn numbers(value: &JsValue, what: &str) -> Result<(Vec<f64>, bool), JsError> {
     if Array::is_array(value) || js_sys::ArrayBuffer::is_view(value) {
         return Ok((Float64Array::new(value).to_vec(), false));
     }
-    Err(JsError::new(&format!("{what}: a number or an array of numbers is needed")))
+    Err(Thrown::request(&format!("{what}: a number or an array of numbers is needed")))
 }
 
 impl Points {
     /// `a` and `b`, named `names` in messages.
-    pub fn new(a: &JsValue, b: &JsValue, names: (&str, &str)) -> Result<Points, JsError> {
+    pub fn new(a: &JsValue, b: &JsValue, names: (&str, &str)) -> Result<Points, Thrown> {
         let ((a, one_a), (b, one_b)) = (numbers(a, names.0)?, numbers(b, names.1)?);
         if a.len() != b.len() {
-            return Err(JsError::new(&format!("{} has {} values, {} {}", names.0, a.len(), names.1, b.len())));
+            return Err(Thrown::request(&format!("{} has {} values, {} {}", names.0, a.len(), names.1, b.len())));
         }
         Ok(Points { a, b, scalar: one_a && one_b })
     }

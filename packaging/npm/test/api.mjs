@@ -10,13 +10,27 @@ import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 
 const [pkg, examples] = process.argv.slice(2);
-const { Road, ContactPoint, evaluations, iso8608Classes, odr } = await import(pathToFileURL(join(pkg, 'index.js')).href);
+const opencrg = await import(pathToFileURL(join(pkg, 'index.js')).href);
+const { Road, ContactPoint, evaluations, iso8608Classes, odr } = opencrg;
+const { CrgError, FormatError, NotFoundError, CheckError, RequestError, OutOfRangeError, TooLargeError } = opencrg;
+// The error classes tell what is thrown apart, as Python's: `kind` and its parents only.
+const kindOf = (f, kind, others) => {
+  try {
+    f();
+  } catch (e) {
+    assert.ok(e instanceof Error && e instanceof CrgError && e instanceof kind, `${e.name}: ${e.message}`);
+    others.forEach((other) => assert.ok(!(e instanceof other), `${e.name} is not a ${other.name}`));
+    return e;
+  }
+  assert.fail(`no ${kind.name} thrown`);
+};
 const cli = (args, input) => execFileSync(process.env.OPENCRG_CLI, args, { input, encoding: 'utf8' });
 const bytes = readFileSync(join(examples, 'demo_road.crg'));
 
 // A damaged file: an Error with the command's message; the next load works.
 const garbage = new Uint8Array([0, 1, 2, 36, 36, 36, 36, 10, 120]);
 assert.throws(() => Road.fromBytes(garbage, 'garbage.crg'), (e) => e instanceof Error && /garbage\.crg/.test(e.message));
+kindOf(() => Road.fromBytes(garbage, 'garbage.crg'), FormatError, [RequestError, CheckError, NotFoundError]);
 const road = Road.fromBytes(bytes, 'demo_road.crg');
 road.check();
 road.applyModifiers();
@@ -77,12 +91,16 @@ assert.throws(() => cp.setOption('refline_continuation', -1), { message: '<refli
 assert.throws(() => road.setModifier('SCALE_Q', 1), /unknown modifier 'SCALE_Q'/);
 road.setModifier('scale_z_grid', 2);
 assert.throws(() => road.uvToZ([1, 2], [1]), /u has 2 values, v 1/);
+kindOf(() => road.uvToZ([1, 2], [1]), RequestError, [OutOfRangeError, TooLargeError, FormatError]);
+kindOf(() => new ContactPoint(road, { BORDER_MODE_V: 99 }), OutOfRangeError, [TooLargeError, FormatError]);
+assert.ok(!(new Error('plain') instanceof CrgError) && new OutOfRangeError('made') instanceof RequestError);
 
 // File references from the files given.
 const top = new TextEncoder().encode('$ROAD_CRG_FILE\n roads/demo_road.crg\n$\n');
 const referencing = Road.fromBytes(top, 'top.crg', { files: { 'roads/demo_road.crg': bytes } });
 assert.equal(referencing.grid.length, 241 * 25);
 assert.throws(() => Road.fromBytes(top, 'top.crg', { files: {} }), /demo_road\.crg/);
+kindOf(() => Road.fromBytes(top, 'top.crg', { files: {} }), NotFoundError, [FormatError, RequestError]);
 
 // A map from bytes with its CRG file.
 const map = odr.Map.fromBytes(readFileSync(join(examples, 'demo_map.xodr')), { 'demo_road.crg': bytes }, 'demo_map.xodr');

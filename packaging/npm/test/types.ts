@@ -2,6 +2,8 @@
 // (`tsc --strict --noEmit`, test.sh): a declaration that is missing or that disagrees with
 // the guide's use (docs/web.md) fails here. Never run: it only has to compile.
 import { ContactPoint, Road, evaluations, iso8608Classes, odr } from './index.js';
+import { CheckError, CrgError, FormatError, IoError, NotFoundError } from './index.js';
+import { OutOfRangeError, RequestError, TooLargeError } from './index.js';
 
 declare const bytes: Uint8Array;
 
@@ -62,6 +64,17 @@ const mapText: string = map.info() + map.viewPage('demo_map.xodr', 0.01);
 map.free();
 road.free();
 
+// Errors told apart by class.
+let kind = '';
+try {
+  Road.fromBytes(bytes);
+} catch (e) {
+  if (e instanceof FormatError || e instanceof NotFoundError || e instanceof IoError) kind = `file: ${e.message}`;
+  else if (e instanceof CheckError) kind = 'check';
+  else if (e instanceof OutOfRangeError || e instanceof TooLargeError) kind = e.name;
+  else if (e instanceof RequestError || e instanceof CrgError) kind = e.message;
+}
+
 // @ts-expect-error: a number for each coordinate, or arrays for both
 road.uvToZ('10', 0.5);
 // @ts-expect-error: the library's calls only
@@ -69,4 +82,4 @@ road.uvToFriction(10, 0.5);
 
 export const used = [ranges, closed, grid, format, text, z, u, v, phi, curv, pk, nz, nx, ny, nn, normals, any];
 export const alsoUsed = [options, refused, cpAnswers, first, band, classes, calls, at, many, mx, my, mz];
-export const mapUsed = [surface, findings, ids, lengths, mapText];
+export const mapUsed = [surface, findings, ids, lengths, mapText, kind];
