@@ -1,5 +1,6 @@
 //! What the commands read: road files (their warnings said), the data formats' names,
-//! and pairs of numbers from stdin; and how a command fails (one line for the user).
+//! pairs of numbers from stdin and the numbers printed back; and how a command fails (one
+//! line for the user).
 
 use clap::ValueEnum;
 use opencrg_core::{DataFormat, Road};
@@ -62,5 +63,35 @@ impl From<Format> for DataFormat {
             Format::Lrfi => DataFormat::Lrfi,
             Format::Ldfi => DataFormat::Ldfi,
         }
+    }
+}
+
+/// A number as the point commands print it: the shortest text that reads back as the same
+/// number, plainly where that is short (1e-5 to 1e16), in powers of ten otherwise (`1e300`,
+/// not 301 digits); `nan` for NaN.
+pub(crate) fn number(x: f64) -> String {
+    if x.is_nan() {
+        "nan".into()
+    } else if x == 0.0 || !x.is_finite() || (1e-5..1e16).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
+#[cfg(test)]
+mod number_tests {
+    use super::number;
+
+    #[test]
+    fn numbers_read_back_the_same_and_stay_short() {
+        for x in [0.0, -0.0, 1.5, -120.25, 1e-5, 9.999e15, 1e16, 1e300, -2.5e-300, 5e-324, f64::MAX, f64::INFINITY] {
+            let text = number(x);
+            assert_eq!(text.parse::<f64>().unwrap().to_bits(), x.to_bits(), "{text}");
+            assert!(text.len() <= 24, "{text}");
+        }
+        assert_eq!(number(1e300), "1e300");
+        assert_eq!(number(0.1 + 0.2), "0.30000000000000004");
+        assert_eq!(number(f64::NAN), "nan");
     }
 }

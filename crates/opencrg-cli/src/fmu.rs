@@ -84,10 +84,10 @@ pub(crate) fn run(args: FmuArgs) -> Result<(), Failure> {
     let report = write_fmu(&args.road, &args.output, &options).map_err(|e| e.to_string())?;
     let platforms: Vec<&str> = report.platforms.iter().map(|p| p.tuple()).collect();
     eprintln!(
-        "{}: FMI {}.0, model exchange and co-simulation, {} wheels, {} variables, model identifier {}, binaries for {}",
+        "{}: FMI {}.0, model exchange and co-simulation, {}, {} variables, model identifier {}, binaries for {}",
         args.output.display(),
         fmi.major(),
-        args.wheels,
+        opencrg_core::units::Count(args.wheels as usize, "wheel"),
         report.variables,
         report.identifier,
         platforms.join(", ")

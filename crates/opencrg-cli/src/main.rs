@@ -261,10 +261,7 @@ fn contact_point(path: &Path, o: &EvalOptions) -> Result<ContactPoint, Failure> 
 }
 
 fn number(v: Option<f64>) -> String {
-    match v {
-        Some(x) if !x.is_nan() => format!("{x}"),
-        _ => "nan".into(),
-    }
+    files::number(v.unwrap_or(f64::NAN))
 }
 
 /// Reads point lines from stdin and writes the CSV.

@@ -3,6 +3,7 @@
 //! s and t at world points read from stdin, `render` draws the map's heights, `export`
 //! writes the drivable surface as a mesh, `view` shows it in the browser.
 
+use crate::files::number;
 use clap::Subcommand;
 use opencrg_core::Budget;
 use opencrg_odr::{Map, Surface};
@@ -90,14 +91,6 @@ fn info(map: &Map, json: bool) {
     }
 }
 
-fn number(x: f64) -> String {
-    if x.is_nan() {
-        "nan".into()
-    } else {
-        format!("{x}")
-    }
-}
-
 fn eval(path: &Path) -> Result<(), String> {
     let surface = Arc::new(Surface::load(path).map_err(|e| e.to_string())?);
     let mut probe = surface.probe();
@@ -106,7 +99,7 @@ fn eval(path: &Path) -> Result<(), String> {
     crate::files::stdin_pairs(|x, y| match probe.ground(x, y) {
         Some(g) => {
             let road = &surface.map().roads[g.road].id;
-            writeln!(out, "{} {} {road} {} {}", number(g.z), number(g.friction), g.s, g.t).map_err(io)
+            writeln!(out, "{} {} {road} {} {}", number(g.z), number(g.friction), number(g.s), number(g.t)).map_err(io)
         }
         None => writeln!(out, "nan nan - nan nan").map_err(io),
     })?;

@@ -181,6 +181,10 @@ fn eval_prints_the_library_answers() {
     let out = opencrg(&["eval", road.to_str().unwrap(), "--xy"], Some("5 7\n"));
     let t = text(&out.stdout);
     assert!(t.starts_with("x,y,u,v,z,phi,curv\n5,7,"), "{t}");
+    // Huge and tiny numbers in powers of ten, not hundreds of digits.
+    let out = opencrg(&["eval", road.to_str().unwrap()], Some("1e300 -2.5e-300\n"));
+    let t = text(&out.stdout);
+    assert!(t.lines().nth(1).is_some_and(|l| l.starts_with("1e300,-2.5e-300,") && l.len() < 200), "{t}");
     // A bad line: one line on stderr, exit status 2.
     let out = opencrg(&["eval", road.to_str().unwrap()], Some("1 2\nabc\n"));
     assert_eq!(out.status.code(), Some(2));

@@ -7,6 +7,7 @@
 use crate::arrays::Points;
 use crate::errors::{request_error, to_py};
 use crate::road::matrix;
+use ::opencrg_core::units::Count;
 use numpy::{PyArray1, PyArrayMethods};
 use opencrg_odr::Surface;
 use pyo3::prelude::*;
@@ -50,7 +51,8 @@ impl Map {
 
     fn __repr__(&self) -> String {
         let m = self.surface.map();
-        format!("opencrg.odr.Map('{}': {} roads, {} junctions)", self.path.display(), m.roads.len(), m.junctions.len())
+        let (roads, junctions) = (Count(m.roads.len(), "road"), Count(m.junctions.len(), "junction"));
+        format!("opencrg.odr.Map('{}': {roads}, {junctions})", self.path.display())
     }
 
     /// The file read.

@@ -73,6 +73,7 @@ fn a_crg_file_is_packed_with_its_description_resources_and_binary_the_same_each_
     let description = text(&three, "modelDescription.xml");
     assert!(description.contains("fmiVersion=\"3.0\"") && description.contains("causality=\"independent\""));
     assert!(!description.contains(&config.token));
+    assert!(description.contains("friction under 1 wheel\""), "one wheel, not one wheels");
 }
 
 #[test]
@@ -91,6 +92,7 @@ fn a_maps_crg_files_are_packed_wherever_the_map_names_them() {
     let report = write_fmu(&d.join("maps/town.xodr"), &d.join("town.fmu"), &options(&d, Fmi::V3, 2)).unwrap();
     assert_eq!(report.resources, ["road/town.xodr", "crg/1/patch.crg", "opencrg-fmu.txt"]);
     let got = entries(&d.join("town.fmu"));
+    assert!(text(&got, "modelDescription.xml").contains("with 1 CRG file: height, normal and friction under 2 wheels"));
     let config = Config::parse(&text(&got, "resources/opencrg-fmu.txt"), Path::new("c")).unwrap();
     assert_eq!(config.crg, [("../surfaces/patch.crg".to_string(), "crg/1/patch.crg".to_string())]);
     let abs_map = map[..record].to_string() + &format!("file=\"{}\"", absolute.display()) + &map[record + 20..];

@@ -15,6 +15,17 @@ impl std::fmt::Display for Num {
     }
 }
 
+/// A count and its noun, the noun in the plural unless the count is one (`1 wheel`,
+/// `4 wheels`, `0 CRG files`); the plural adds an `s`.
+pub struct Count<'a>(pub usize, pub &'a str);
+
+impl std::fmt::Display for Count<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let Count(n, noun) = *self;
+        write!(f, "{n} {noun}{}", if n == 1 { "" } else { "s" })
+    }
+}
+
 /// A length in metres shown to the nanometre, as short as that allows: the sums and
 /// differences that place grid nodes carry rounding in their last bits
 /// (`-0.9999999999999999`), which says nothing about the road.
@@ -34,7 +45,14 @@ impl std::fmt::Display for Metres {
 
 #[cfg(test)]
 mod tests {
-    use super::Metres;
+    use super::{Count, Metres};
+
+    #[test]
+    fn counts_take_the_plural_unless_one() {
+        assert_eq!(Count(1, "wheel").to_string(), "1 wheel");
+        assert_eq!(Count(0, "CRG file").to_string(), "0 CRG files");
+        assert_eq!(Count(4, "road").to_string(), "4 roads");
+    }
 
     #[test]
     fn lengths_are_shown_to_the_nanometre() {

@@ -10,6 +10,7 @@
 //! the FMU's binary will load it; the FMU is written to a temporary file and renamed,
 //! so a refused road leaves nothing behind.
 
+use opencrg_core::units::Count;
 use opencrg_core::{Error, Result};
 use opencrg_fmu::description::{identifier_of, model_description, Fmi, Meta};
 use opencrg_fmu::{config, Config, Kind};
@@ -372,11 +373,14 @@ pub fn write_fmu(road: &Path, out: &Path, options: &FmuOptions) -> Result<FmuRep
     let identifier = identifier_of(&name);
     let variables = fmu.variables(options.fmi == Fmi::V3);
     let description = match kind {
-        Kind::Crg => format!("OpenCRG road {file_name}: height, normal and friction under {} wheels", options.wheels),
+        Kind::Crg => format!(
+            "OpenCRG road {file_name}: height, normal and friction under {}",
+            Count(options.wheels as usize, "wheel")
+        ),
         Kind::Map => format!(
-            "OpenDRIVE map {file_name} with {} CRG files: height, normal and friction under {} wheels",
-            config.crg.len(),
-            options.wheels
+            "OpenDRIVE map {file_name} with {}: height, normal and friction under {}",
+            Count(config.crg.len(), "CRG file"),
+            Count(options.wheels as usize, "wheel")
         ),
     };
     let meta = Meta {

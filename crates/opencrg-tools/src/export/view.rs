@@ -6,6 +6,7 @@
 use crate::export::map_mesh::{map_mesh, MeshOptions};
 use crate::export::mesh::{grid_mesh_every, json_string, Mesh};
 use crate::export::mesh_files::{write_mesh_to, MeshFormat};
+use opencrg_core::units::Count;
 use opencrg_core::{Budget, ContactPoint, Error, Result};
 use opencrg_odr::Surface;
 use std::sync::Arc;
@@ -117,10 +118,10 @@ pub fn map_view(surface: &Arc<Surface>, name: &str, options: &MeshOptions, budge
     let ids: Vec<String> = surface.map().roads.iter().map(|r| json_string(&r.id)).collect();
     let names = format!("{{\"road\": [{}]}}", ids.join(","));
     let info = format!(
-        "{} &middot; {} roads, {} CRG records (outlined) &middot; {} vertices, {} triangles",
+        "{} &middot; {}, {} (outlined) &middot; {} vertices, {} triangles",
         escape(name),
-        surface.map().roads.len(),
-        outlines.len(),
+        Count(surface.map().roads.len(), "road"),
+        Count(outlines.len(), "CRG record"),
         mesh.positions.len(),
         mesh.triangles.len()
     );
