@@ -5,8 +5,9 @@
 //! refuse with a message.
 #![allow(non_snake_case)]
 
-use crate::guard::{guarded, on_instance, slice, slice_mut, text, this_export};
-use crate::instance::{error, Instance, Interface, Refused, State};
+use crate::abi;
+use crate::guard::{on_instance, slice, slice_mut, text, this_export};
+use crate::instance::Interface;
 use crate::log::{Fmi2Logger, Logger, Status};
 use opencrg_fmu::Fmi;
 use std::ffi::{c_char, c_int, c_uint, c_void};
@@ -67,40 +68,29 @@ pub unsafe extern "C" fn fmi2Instantiate(
     _visible: Boolean,
     logging_on: Boolean,
 ) -> Component {
-    let name = this_export!()();
-    guarded(std::ptr::null_mut(), || {
-        // SAFETY: the caller's promise.
-        let (instance_name, guid, location) = unsafe { (text(instance_name), text(guid), text(resource_location)) };
-        let instance_name = instance_name.unwrap_or_default();
-        // SAFETY: the caller's promise.
-        let logger = match unsafe { functions.as_ref() } {
-            Some(CallbackFunctions { logger: Some(log), component_environment, .. }) => {
-                Logger::Fmi2 { log: *log, env: *component_environment, name: crate::log::c_text(&instance_name) }
-            }
-            _ => Logger::Silent,
+    // SAFETY: the caller's promise.
+    let (instance_name, guid, location) = unsafe { (text(instance_name), text(guid), text(resource_location)) };
+    // SAFETY: the caller's promise.
+    let logger = match unsafe { functions.as_ref() } {
+        Some(CallbackFunctions { logger: Some(log), component_environment, .. }) => Logger::Fmi2 {
+            log: *log,
+            env: *component_environment,
+            name: crate::log::c_text(&instance_name.unwrap_or_default()),
+        },
+        _ => Logger::Silent,
+    };
+    let made = || {
+        let interface = match fmu_type {
+            0 => Interface::ModelExchange,
+            1 => Interface::CoSimulation,
+            other => return Err(format!("fmuType {other}: 0 (model exchange) or 1 (co-simulation)")),
         };
-        let made = (|| {
-            let interface = match fmu_type {
-                0 => Interface::ModelExchange,
-                1 => Interface::CoSimulation,
-                other => return Err(format!("fmuType {other}: 0 (model exchange) or 1 (co-simulation)")),
-            };
-            let location = location.ok_or("no fmuResourceLocation given")?;
-            let resources = crate::uri::file_path(&location)
-                .ok_or_else(|| format!("fmuResourceLocation '{location}' is not a file: URI of this machine"))?;
-            Instance::new(&guid.unwrap_or_default(), &resources, interface, Fmi::V2, logger.clone())
-        })();
-        match made {
-            Ok(mut instance) => {
-                instance.logging_on = logging_on != 0;
-                Box::into_raw(Box::new(instance)).cast()
-            }
-            Err(message) => {
-                logger.say(Status::Error, &format!("{name}: {message}"));
-                std::ptr::null_mut()
-            }
-        }
-    })
+        let location = location.ok_or("no fmuResourceLocation given")?;
+        let resources = crate::uri::file_path(&location)
+            .ok_or_else(|| format!("fmuResourceLocation '{location}' is not a file: URI of this machine"))?;
+        Ok((interface, guid, resources))
+    };
+    abi::instantiate(this_export!()(), made, Fmi::V2, logger, logging_on != 0)
 }
 
 /// Frees an instance.
@@ -109,10 +99,8 @@ pub unsafe extern "C" fn fmi2Instantiate(
 /// `c` is null or an instance of this library, not used again.
 #[no_mangle]
 pub unsafe extern "C" fn fmi2FreeInstance(c: Component) {
-    if !c.is_null() {
-        // SAFETY: the caller's promise; a panic in a drop is caught.
-        guarded((), || drop(unsafe { Box::from_raw(c.cast::<Instance>()) }));
-    }
+    // SAFETY: the caller's promise.
+    unsafe { abi::free(c) }
 }
 
 /// Switches debug messages on or off (errors are always said).
@@ -149,13 +137,7 @@ pub unsafe extern "C" fn fmi2SetupExperiment(
     _stop_time: f64,
 ) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            i.expect(&[State::Instantiated], "setting up the experiment")?;
-            i.set_time(start_time);
-            Ok(())
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.setup_experiment(start_time)) }
 }
 
 /// Enters initialization mode.
@@ -165,7 +147,7 @@ pub unsafe extern "C" fn fmi2SetupExperiment(
 #[no_mangle]
 pub unsafe extern "C" fn fmi2EnterInitializationMode(c: Component) -> Status {
     // SAFETY: the caller's promise.
-    unsafe { on_instance(this_export!(), c, |i| i.enter_initialization()) }
+    unsafe { on_instance(this_export!(), c, |i| i.enter_initialization(None)) }
 }
 
 /// Leaves initialization mode: into event mode (model exchange) or stepping
@@ -176,16 +158,7 @@ pub unsafe extern "C" fn fmi2EnterInitializationMode(c: Component) -> Status {
 #[no_mangle]
 pub unsafe extern "C" fn fmi2ExitInitializationMode(c: Component) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            i.expect(&[State::Initialization], "leaving initialization mode")?;
-            i.state = match i.interface() {
-                Interface::ModelExchange => State::Event,
-                Interface::CoSimulation => State::Step,
-            };
-            Ok(())
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.exit_initialization()) }
 }
 
 /// Ends the simulation.
@@ -195,13 +168,7 @@ pub unsafe extern "C" fn fmi2ExitInitializationMode(c: Component) -> Status {
 #[no_mangle]
 pub unsafe extern "C" fn fmi2Terminate(c: Component) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            i.expect(&[State::Event, State::ContinuousTime, State::Step], "terminating")?;
-            i.state = State::Terminated;
-            Ok(())
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.terminate()) }
 }
 
 /// Back to the state after instantiation, with the start values.
@@ -211,22 +178,7 @@ pub unsafe extern "C" fn fmi2Terminate(c: Component) -> Status {
 #[no_mangle]
 pub unsafe extern "C" fn fmi2Reset(c: Component) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            i.expect(
-                &[
-                    State::Instantiated,
-                    State::Initialization,
-                    State::Event,
-                    State::ContinuousTime,
-                    State::Step,
-                    State::Terminated,
-                ],
-                "resetting",
-            )?;
-            i.reset()
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.reset_all()) }
 }
 
 /// Reads Real variables: a wheel's answer computed where it moved since.
@@ -248,11 +200,7 @@ pub unsafe extern "C" fn fmi2GetInteger(c: Component, vr: *const Vr, nvr: usize,
     // SAFETY: the caller's promise.
     unsafe {
         on_instance(this_export!(), c, |i| {
-            let (vr, value) = (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?);
-            for (&r, v) in vr.iter().zip(value) {
-                *v = i.integer(r)?;
-            }
-            Ok(())
+            abi::integers(i, slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?, |v| v)
         })
     }
 }
@@ -266,11 +214,7 @@ pub unsafe extern "C" fn fmi2GetBoolean(c: Component, vr: *const Vr, nvr: usize,
     // SAFETY: the caller's promise.
     unsafe {
         on_instance(this_export!(), c, |i| {
-            let (vr, value) = (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?);
-            for (&r, v) in vr.iter().zip(value) {
-                *v = Boolean::from(i.boolean(r)?);
-            }
-            Ok(())
+            abi::booleans(i, slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?, Boolean::from)
         })
     }
 }
@@ -284,13 +228,7 @@ pub unsafe extern "C" fn fmi2GetBoolean(c: Component, vr: *const Vr, nvr: usize,
 pub unsafe extern "C" fn fmi2GetString(c: Component, vr: *const Vr, nvr: usize, value: *mut *const c_char) -> Status {
     // SAFETY: the caller's promise.
     unsafe {
-        on_instance(this_export!(), c, |i| {
-            let (vr, value) = (slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?);
-            for (s, v) in i.strings(vr)?.iter().zip(value) {
-                *v = s.as_ptr();
-            }
-            Ok(())
-        })
+        on_instance(this_export!(), c, |i| abi::strings(i, slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?))
     }
 }
 
@@ -313,11 +251,7 @@ pub unsafe extern "C" fn fmi2SetInteger(c: Component, vr: *const Vr, nvr: usize,
     // SAFETY: the caller's promise.
     unsafe {
         on_instance(this_export!(), c, |i| {
-            let (vr, value) = (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?);
-            for (&r, &v) in vr.iter().zip(value) {
-                i.set_integer(r, v)?;
-            }
-            Ok(())
+            abi::set_integers(i, slice(vr, nvr, "vr")?, slice(value, nvr, "value")?, |v| v)
         })
     }
 }
@@ -329,14 +263,7 @@ pub unsafe extern "C" fn fmi2SetInteger(c: Component, vr: *const Vr, nvr: usize,
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetBoolean(c: Component, vr: *const Vr, nvr: usize, _value: *const Boolean) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            for &r in slice(vr, nvr, "vr")? {
-                i.set_boolean(r)?;
-            }
-            Ok(())
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| abi::set_booleans(i, slice(vr, nvr, "vr")?)) }
 }
 
 /// Sets String variables (the behaviour profile).
@@ -348,20 +275,8 @@ pub unsafe extern "C" fn fmi2SetBoolean(c: Component, vr: *const Vr, nvr: usize,
 pub unsafe extern "C" fn fmi2SetString(c: Component, vr: *const Vr, nvr: usize, value: *const *const c_char) -> Status {
     // SAFETY: the caller's promise.
     unsafe {
-        on_instance(this_export!(), c, |i| {
-            let (vr, value) = (slice(vr, nvr, "vr")?, slice(value, nvr, "value")?);
-            for (&r, &v) in vr.iter().zip(value) {
-                let v = text(v).ok_or_else(|| error("a null string"))?;
-                i.set_string(r, &v)?;
-            }
-            Ok(())
-        })
+        on_instance(this_export!(), c, |i| abi::set_strings(i, slice(vr, nvr, "vr")?, slice(value, nvr, "value")?))
     }
-}
-
-/// A capability the model description does not claim.
-fn unsupported(what: &str) -> Result<(), Refused> {
-    Err(error(format!("{what} is not supported (the model description says so)")))
 }
 
 /// Not supported: FMU states.
@@ -371,7 +286,7 @@ fn unsupported(what: &str) -> Result<(), Refused> {
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetFMUstate(c: Component, _state: *mut *mut c_void) -> Status {
     // SAFETY: the caller's promise.
-    unsafe { on_instance(this_export!(), c, |_| unsupported("getting the FMU state")) }
+    unsafe { on_instance(this_export!(), c, |_| abi::unsupported("getting the FMU state")) }
 }
 
 /// Not supported: FMU states.
@@ -381,7 +296,7 @@ pub unsafe extern "C" fn fmi2GetFMUstate(c: Component, _state: *mut *mut c_void)
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetFMUstate(c: Component, _state: *mut c_void) -> Status {
     // SAFETY: the caller's promise.
-    unsafe { on_instance(this_export!(), c, |_| unsupported("setting the FMU state")) }
+    unsafe { on_instance(this_export!(), c, |_| abi::unsupported("setting the FMU state")) }
 }
 
 /// Not supported: FMU states.
@@ -391,7 +306,7 @@ pub unsafe extern "C" fn fmi2SetFMUstate(c: Component, _state: *mut c_void) -> S
 #[no_mangle]
 pub unsafe extern "C" fn fmi2FreeFMUstate(c: Component, _state: *mut *mut c_void) -> Status {
     // SAFETY: the caller's promise.
-    unsafe { on_instance(this_export!(), c, |_| unsupported("freeing an FMU state")) }
+    unsafe { on_instance(this_export!(), c, |_| abi::unsupported("freeing an FMU state")) }
 }
 
 /// Not supported: FMU states.
@@ -401,7 +316,7 @@ pub unsafe extern "C" fn fmi2FreeFMUstate(c: Component, _state: *mut *mut c_void
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SerializedFMUstateSize(c: Component, _state: *mut c_void, _size: *mut usize) -> Status {
     // SAFETY: the caller's promise.
-    unsafe { on_instance(this_export!(), c, |_| unsupported("serializing the FMU state")) }
+    unsafe { on_instance(this_export!(), c, |_| abi::unsupported("serializing the FMU state")) }
 }
 
 /// Not supported: FMU states.
@@ -416,7 +331,7 @@ pub unsafe extern "C" fn fmi2SerializeFMUstate(
     _size: usize,
 ) -> Status {
     // SAFETY: the caller's promise.
-    unsafe { on_instance(this_export!(), c, |_| unsupported("serializing the FMU state")) }
+    unsafe { on_instance(this_export!(), c, |_| abi::unsupported("serializing the FMU state")) }
 }
 
 /// Not supported: FMU states.
@@ -431,7 +346,7 @@ pub unsafe extern "C" fn fmi2DeSerializeFMUstate(
     _state: *mut *mut c_void,
 ) -> Status {
     // SAFETY: the caller's promise.
-    unsafe { on_instance(this_export!(), c, |_| unsupported("deserializing an FMU state")) }
+    unsafe { on_instance(this_export!(), c, |_| abi::unsupported("deserializing an FMU state")) }
 }
 
 /// Not supported: directional derivatives.
@@ -449,7 +364,7 @@ pub unsafe extern "C" fn fmi2GetDirectionalDerivative(
     _dv_unknown: *mut f64,
 ) -> Status {
     // SAFETY: the caller's promise.
-    unsafe { on_instance(this_export!(), c, |_| unsupported("directional derivatives")) }
+    unsafe { on_instance(this_export!(), c, |_| abi::unsupported("directional derivatives")) }
 }
 
 /// Model exchange: enters event mode.
@@ -459,13 +374,7 @@ pub unsafe extern "C" fn fmi2GetDirectionalDerivative(
 #[no_mangle]
 pub unsafe extern "C" fn fmi2EnterEventMode(c: Component) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            i.expect(&[State::Event, State::ContinuousTime], "entering event mode")?;
-            i.state = State::Event;
-            Ok(())
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.enter_event_mode()) }
 }
 
 /// Model exchange: no discrete states to update, no event to come.
@@ -477,7 +386,7 @@ pub unsafe extern "C" fn fmi2NewDiscreteStates(c: Component, info: *mut EventInf
     // SAFETY: the caller's promise.
     unsafe {
         on_instance(this_export!(), c, |i| {
-            i.expect(&[State::Event], "updating discrete states")?;
+            i.update_discrete_states()?;
             let info = slice_mut(info, 1, "eventInfo")?;
             info[0] = EventInfo {
                 new_discrete_states_needed: 0,
@@ -499,13 +408,7 @@ pub unsafe extern "C" fn fmi2NewDiscreteStates(c: Component, info: *mut EventInf
 #[no_mangle]
 pub unsafe extern "C" fn fmi2EnterContinuousTimeMode(c: Component) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            i.expect(&[State::Event], "entering continuous-time mode")?;
-            i.state = State::ContinuousTime;
-            Ok(())
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.enter_continuous_time()) }
 }
 
 /// Model exchange: a step done; no event is needed.
@@ -522,7 +425,7 @@ pub unsafe extern "C" fn fmi2CompletedIntegratorStep(
     // SAFETY: the caller's promise.
     unsafe {
         on_instance(this_export!(), c, |i| {
-            i.expect(&[State::ContinuousTime], "completing an integrator step")?;
+            i.completed_integrator_step()?;
             slice_mut(enter_event_mode, 1, "enterEventMode")?[0] = 0;
             slice_mut(terminate, 1, "terminateSimulation")?[0] = 0;
             Ok(())
@@ -537,22 +440,7 @@ pub unsafe extern "C" fn fmi2CompletedIntegratorStep(
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetTime(c: Component, time: f64) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            i.expect(&[State::Event, State::ContinuousTime], "setting the time")?;
-            i.set_time(time);
-            Ok(())
-        })
-    }
-}
-
-/// Refuses a state vector of a length other than 0 (there are no states).
-fn no_states(n: usize) -> Result<(), Refused> {
-    if n == 0 {
-        Ok(())
-    } else {
-        Err(error(format!("{n} continuous states asked for: this FMU has none")))
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.set_model_time(time)) }
 }
 
 /// Model exchange: there are no states (n must be 0).
@@ -562,7 +450,7 @@ fn no_states(n: usize) -> Result<(), Refused> {
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetContinuousStates(c: Component, _x: *const f64, n: usize) -> Status {
     // SAFETY: the caller's promise.
-    unsafe { on_instance(this_export!(), c, |_| no_states(n)) }
+    unsafe { on_instance(this_export!(), c, |_| abi::no_states(n)) }
 }
 
 /// Model exchange: there are no states (n must be 0).
@@ -572,7 +460,7 @@ pub unsafe extern "C" fn fmi2SetContinuousStates(c: Component, _x: *const f64, n
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetDerivatives(c: Component, _dx: *mut f64, n: usize) -> Status {
     // SAFETY: the caller's promise.
-    unsafe { on_instance(this_export!(), c, |_| no_states(n)) }
+    unsafe { on_instance(this_export!(), c, |_| abi::no_states(n)) }
 }
 
 /// Model exchange: there are no event indicators (n must be 0).
@@ -580,14 +468,9 @@ pub unsafe extern "C" fn fmi2GetDerivatives(c: Component, _dx: *mut f64, n: usiz
 /// # Safety
 /// `c` is null or a live instance of this library.
 #[no_mangle]
-pub unsafe extern "C" fn fmi2GetEventIndicators(c: Component, _z: *mut f64, n: usize) -> Status {
+pub unsafe extern "C" fn fmi2GetEventIndicators(c: Component, z: *mut f64, n: usize) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |_| match n {
-            0 => Ok(()),
-            n => Err(error(format!("{n} event indicators asked for: this FMU has none"))),
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.event_indicators(slice_mut(z, n, "eventIndicators")?)) }
 }
 
 /// Model exchange: there are no states (n must be 0).
@@ -597,7 +480,7 @@ pub unsafe extern "C" fn fmi2GetEventIndicators(c: Component, _z: *mut f64, n: u
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetContinuousStates(c: Component, _x: *mut f64, n: usize) -> Status {
     // SAFETY: the caller's promise.
-    unsafe { on_instance(this_export!(), c, |_| no_states(n)) }
+    unsafe { on_instance(this_export!(), c, |_| abi::no_states(n)) }
 }
 
 /// Model exchange: there are no states (n must be 0).
@@ -607,7 +490,7 @@ pub unsafe extern "C" fn fmi2GetContinuousStates(c: Component, _x: *mut f64, n: 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetNominalsOfContinuousStates(c: Component, _x: *mut f64, n: usize) -> Status {
     // SAFETY: the caller's promise.
-    unsafe { on_instance(this_export!(), c, |_| no_states(n)) }
+    unsafe { on_instance(this_export!(), c, |_| abi::no_states(n)) }
 }
 
 /// Co-simulation: input derivatives are not used (order 0 only).
@@ -623,12 +506,7 @@ pub unsafe extern "C" fn fmi2SetRealInputDerivatives(
     _value: *const f64,
 ) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |_| match nvr {
-            0 => Ok(()),
-            _ => unsupported("input derivatives"),
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |_| abi::no_derivatives(nvr, "input derivatives")) }
 }
 
 /// Co-simulation: output derivatives are not given (maxOutputDerivativeOrder 0).
@@ -644,12 +522,7 @@ pub unsafe extern "C" fn fmi2GetRealOutputDerivatives(
     _value: *mut f64,
 ) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |_| match nvr {
-            0 => Ok(()),
-            _ => unsupported("output derivatives"),
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |_| abi::no_derivatives(nvr, "output derivatives")) }
 }
 
 /// Co-simulation: a step (the outputs follow the inputs; the time advances).
@@ -659,16 +532,7 @@ pub unsafe extern "C" fn fmi2GetRealOutputDerivatives(
 #[no_mangle]
 pub unsafe extern "C" fn fmi2DoStep(c: Component, current: f64, step: f64, _no_set_prior: Boolean) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            i.expect(&[State::Step], "a step")?;
-            if !(step >= 0.0) {
-                return Err(error(format!("communicationStepSize {step}: must not be negative")));
-            }
-            i.set_time(current + step);
-            Ok(())
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.do_step(current, step)) }
 }
 
 /// Co-simulation: steps are never asynchronous, so there is nothing to cancel.
@@ -678,7 +542,7 @@ pub unsafe extern "C" fn fmi2DoStep(c: Component, current: f64, step: f64, _no_s
 #[no_mangle]
 pub unsafe extern "C" fn fmi2CancelStep(c: Component) -> Status {
     // SAFETY: the caller's promise.
-    unsafe { on_instance(this_export!(), c, |_| unsupported("cancelling a step (steps end before they return)")) }
+    unsafe { on_instance(this_export!(), c, |_| abi::unsupported("cancelling a step (steps end before they return)")) }
 }
 
 macro_rules! status_query {
@@ -690,7 +554,9 @@ macro_rules! status_query {
         #[no_mangle]
         pub unsafe extern "C" fn $name(c: Component, _kind: c_int, _value: *mut $ty) -> Status {
             // SAFETY: the caller's promise.
-            unsafe { on_instance(this_export!(), c, |_| unsupported("status queries (steps are never asynchronous)")) }
+            unsafe {
+                on_instance(this_export!(), c, |_| abi::unsupported("status queries (steps are never asynchronous)"))
+            }
         }
     };
 }

@@ -5,8 +5,9 @@
 //! mode, types the FMU has no variable of) refuse with a message.
 #![allow(non_snake_case)]
 
+use crate::abi;
 use crate::guard::{guarded, on_instance, same_length, slice, slice_mut, text, this_export};
-use crate::instance::{error, Instance, Interface, Refused, State};
+use crate::instance::{error, Interface, Refused};
 use crate::log::{Fmi3Logger, Logger, Status};
 use opencrg_fmu::Fmi;
 use std::ffi::{c_char, c_int, c_void};
@@ -39,28 +40,14 @@ unsafe fn instantiate(
     env: *mut c_void,
     log: Option<Fmi3Logger>,
 ) -> Inst {
-    guarded(std::ptr::null_mut(), || {
-        let logger = match log {
-            Some(log) => Logger::Fmi3 { log, env },
-            None => Logger::Silent,
-        };
-        // SAFETY: the caller's promise.
-        let (token, path) = unsafe { (text(token), text(resource_path)) };
-        let made = match path {
-            Some(path) => Instance::new(&token.unwrap_or_default(), path.as_ref(), interface, Fmi::V3, logger.clone()),
-            None => Err("no resourcePath given".to_string()),
-        };
-        match made {
-            Ok(mut instance) => {
-                instance.logging_on = logging_on;
-                Box::into_raw(Box::new(instance)).cast()
-            }
-            Err(message) => {
-                logger.say(Status::Error, &format!("{name}: {message}"));
-                std::ptr::null_mut()
-            }
-        }
-    })
+    let logger = match log {
+        Some(log) => Logger::Fmi3 { log, env },
+        None => Logger::Silent,
+    };
+    // SAFETY: the caller's promise.
+    let (token, path) = unsafe { (text(token), text(resource_path)) };
+    let made = || Ok((interface, token, path.ok_or("no resourcePath given")?.into()));
+    abi::instantiate(name, made, Fmi::V3, logger, logging_on)
 }
 
 /// Makes a model exchange instance.
@@ -137,10 +124,8 @@ pub unsafe extern "C" fn fmi3InstantiateScheduledExecution(
 /// `c` is null or an instance of this library, not used again.
 #[no_mangle]
 pub unsafe extern "C" fn fmi3FreeInstance(c: Inst) {
-    if !c.is_null() {
-        // SAFETY: the caller's promise; a panic in a drop is caught.
-        guarded((), || drop(unsafe { Box::from_raw(c.cast::<Instance>()) }));
-    }
+    // SAFETY: the caller's promise.
+    unsafe { abi::free(c) }
 }
 
 /// Switches debug messages on or off (errors are always said).
@@ -177,13 +162,7 @@ pub unsafe extern "C" fn fmi3EnterInitializationMode(
     _stop_time: f64,
 ) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            i.enter_initialization()?;
-            i.set_time(start_time);
-            Ok(())
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.enter_initialization(Some(start_time))) }
 }
 
 /// Leaves initialization mode: into event mode (model exchange) or step mode
@@ -194,16 +173,7 @@ pub unsafe extern "C" fn fmi3EnterInitializationMode(
 #[no_mangle]
 pub unsafe extern "C" fn fmi3ExitInitializationMode(c: Inst) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            i.expect(&[State::Initialization], "leaving initialization mode")?;
-            i.state = match i.interface() {
-                Interface::ModelExchange => State::Event,
-                Interface::CoSimulation => State::Step,
-            };
-            Ok(())
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.exit_initialization()) }
 }
 
 /// Model exchange: enters event mode (co-simulation has none).
@@ -213,13 +183,7 @@ pub unsafe extern "C" fn fmi3ExitInitializationMode(c: Inst) -> Status {
 #[no_mangle]
 pub unsafe extern "C" fn fmi3EnterEventMode(c: Inst) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            i.expect(&[State::Event, State::ContinuousTime], "entering event mode")?;
-            i.state = State::Event;
-            Ok(())
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.enter_event_mode()) }
 }
 
 /// Ends the simulation.
@@ -229,13 +193,7 @@ pub unsafe extern "C" fn fmi3EnterEventMode(c: Inst) -> Status {
 #[no_mangle]
 pub unsafe extern "C" fn fmi3Terminate(c: Inst) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            i.expect(&[State::Event, State::ContinuousTime, State::Step], "terminating")?;
-            i.state = State::Terminated;
-            Ok(())
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.terminate()) }
 }
 
 /// Back to the state after instantiation, with the start values.
@@ -245,22 +203,7 @@ pub unsafe extern "C" fn fmi3Terminate(c: Inst) -> Status {
 #[no_mangle]
 pub unsafe extern "C" fn fmi3Reset(c: Inst) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            i.expect(
-                &[
-                    State::Instantiated,
-                    State::Initialization,
-                    State::Event,
-                    State::ContinuousTime,
-                    State::Step,
-                    State::Terminated,
-                ],
-                "resetting",
-            )?;
-            i.reset()
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.reset_all()) }
 }
 
 /// Reads Float64 variables: a wheel's answer computed where it moved since, the time,
@@ -319,11 +262,7 @@ pub unsafe extern "C" fn fmi3GetInt32(c: Inst, vr: *const Vr, nvr: usize, values
     unsafe {
         on_instance(this_export!(), c, |i| {
             same_length(nvr, n_values)?;
-            let (vr, values) = (slice(vr, nvr, "valueReferences")?, slice_mut(values, nvr, "values")?);
-            for (&r, v) in vr.iter().zip(values) {
-                *v = i.integer(r)?;
-            }
-            Ok(())
+            abi::integers(i, slice(vr, nvr, "valueReferences")?, slice_mut(values, nvr, "values")?, |v| v)
         })
     }
 }
@@ -345,11 +284,7 @@ pub unsafe extern "C" fn fmi3SetInt32(
     unsafe {
         on_instance(this_export!(), c, |i| {
             same_length(nvr, n_values)?;
-            let (vr, values) = (slice(vr, nvr, "valueReferences")?, slice(values, nvr, "values")?);
-            for (&r, &v) in vr.iter().zip(values) {
-                i.set_integer(r, v)?;
-            }
-            Ok(())
+            abi::set_integers(i, slice(vr, nvr, "valueReferences")?, slice(values, nvr, "values")?, |v| v)
         })
     }
 }
@@ -371,11 +306,7 @@ pub unsafe extern "C" fn fmi3GetBoolean(
     unsafe {
         on_instance(this_export!(), c, |i| {
             same_length(nvr, n_values)?;
-            let (vr, values) = (slice(vr, nvr, "valueReferences")?, slice_mut(values, nvr, "values")?);
-            for (&r, v) in vr.iter().zip(values) {
-                *v = i.boolean(r)?;
-            }
-            Ok(())
+            abi::booleans(i, slice(vr, nvr, "valueReferences")?, slice_mut(values, nvr, "values")?, |b| b)
         })
     }
 }
@@ -396,10 +327,7 @@ pub unsafe extern "C" fn fmi3SetBoolean(
     unsafe {
         on_instance(this_export!(), c, |i| {
             same_length(nvr, n_values)?;
-            for &r in slice(vr, nvr, "valueReferences")? {
-                i.set_boolean(r)?;
-            }
-            Ok(())
+            abi::set_booleans(i, slice(vr, nvr, "valueReferences")?)
         })
     }
 }
@@ -421,11 +349,7 @@ pub unsafe extern "C" fn fmi3GetString(
     unsafe {
         on_instance(this_export!(), c, |i| {
             same_length(nvr, n_values)?;
-            let (vr, values) = (slice(vr, nvr, "valueReferences")?, slice_mut(values, nvr, "values")?);
-            for (s, v) in i.strings(vr)?.iter().zip(values) {
-                *v = s.as_ptr();
-            }
-            Ok(())
+            abi::strings(i, slice(vr, nvr, "valueReferences")?, slice_mut(values, nvr, "values")?)
         })
     }
 }
@@ -447,12 +371,7 @@ pub unsafe extern "C" fn fmi3SetString(
     unsafe {
         on_instance(this_export!(), c, |i| {
             same_length(nvr, n_values)?;
-            let (vr, values) = (slice(vr, nvr, "valueReferences")?, slice(values, nvr, "values")?);
-            for (&r, &v) in vr.iter().zip(values) {
-                let v = text(v).ok_or_else(|| error("a null string"))?;
-                i.set_string(r, &v)?;
-            }
-            Ok(())
+            abi::set_strings(i, slice(vr, nvr, "valueReferences")?, slice(values, nvr, "values")?)
         })
     }
 }
@@ -613,11 +532,6 @@ pub unsafe extern "C" fn fmi3GetVariableDependencies(
     }
 }
 
-/// A capability the model description does not claim.
-fn unsupported(what: &str) -> Result<(), Refused> {
-    Err(error(format!("{what} is not supported (the model description says so)")))
-}
-
 macro_rules! not_supported {
     ($name:ident ( $($arg:ident : $ty:ty),* ), $what:literal) => {
         #[doc = concat!("Not supported: ", $what, ".")]
@@ -628,7 +542,7 @@ macro_rules! not_supported {
         pub unsafe extern "C" fn $name(c: Inst, $($arg: $ty),*) -> Status {
             $(let _ = $arg;)*
             // SAFETY: the caller's promise.
-            unsafe { on_instance(this_export!(), c, |_| unsupported($what)) }
+            unsafe { on_instance(this_export!(), c, |_| abi::unsupported($what)) }
         }
     };
 }
@@ -677,7 +591,7 @@ pub unsafe extern "C" fn fmi3UpdateDiscreteStates(
     // SAFETY: the caller's promise.
     unsafe {
         on_instance(this_export!(), c, |i| {
-            i.expect(&[State::Event], "updating discrete states")?;
+            i.update_discrete_states()?;
             for (flag, what) in [
                 (update_needed, "discreteStatesNeedUpdate"),
                 (terminate, "terminateSimulation"),
@@ -700,13 +614,7 @@ pub unsafe extern "C" fn fmi3UpdateDiscreteStates(
 #[no_mangle]
 pub unsafe extern "C" fn fmi3EnterContinuousTimeMode(c: Inst) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            i.expect(&[State::Event], "entering continuous-time mode")?;
-            i.state = State::ContinuousTime;
-            Ok(())
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.enter_continuous_time()) }
 }
 
 /// Model exchange: a step done; no event is needed.
@@ -723,7 +631,7 @@ pub unsafe extern "C" fn fmi3CompletedIntegratorStep(
     // SAFETY: the caller's promise.
     unsafe {
         on_instance(this_export!(), c, |i| {
-            i.expect(&[State::ContinuousTime], "completing an integrator step")?;
+            i.completed_integrator_step()?;
             slice_mut(enter_event_mode, 1, "enterEventMode")?[0] = false;
             slice_mut(terminate, 1, "terminateSimulation")?[0] = false;
             Ok(())
@@ -738,22 +646,7 @@ pub unsafe extern "C" fn fmi3CompletedIntegratorStep(
 #[no_mangle]
 pub unsafe extern "C" fn fmi3SetTime(c: Inst, time: f64) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            i.expect(&[State::Event, State::ContinuousTime], "setting the time")?;
-            i.set_time(time);
-            Ok(())
-        })
-    }
-}
-
-/// Refuses a state vector of a length other than 0 (there are no states).
-fn no_states(n: usize) -> Result<(), Refused> {
-    if n == 0 {
-        Ok(())
-    } else {
-        Err(error(format!("{n} continuous states asked for: this FMU has none")))
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.set_model_time(time)) }
 }
 
 macro_rules! no_states_fn {
@@ -765,7 +658,7 @@ macro_rules! no_states_fn {
         #[no_mangle]
         pub unsafe extern "C" fn $name(c: Inst, _values: $ptr, n: usize) -> Status {
             // SAFETY: the caller's promise.
-            unsafe { on_instance(this_export!(), c, |_| no_states(n)) }
+            unsafe { on_instance(this_export!(), c, |_| abi::no_states(n)) }
         }
     };
 }
@@ -779,14 +672,9 @@ no_states_fn!(fmi3GetNominalsOfContinuousStates, *mut f64, "the states' nominal 
 /// # Safety
 /// `c` is null or a live instance of this library.
 #[no_mangle]
-pub unsafe extern "C" fn fmi3GetEventIndicators(c: Inst, _values: *mut f64, n: usize) -> Status {
+pub unsafe extern "C" fn fmi3GetEventIndicators(c: Inst, values: *mut f64, n: usize) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |_| match n {
-            0 => Ok(()),
-            n => Err(error(format!("{n} event indicators asked for: this FMU has none"))),
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.event_indicators(slice_mut(values, n, "eventIndicators")?)) }
 }
 
 /// Model exchange: the number of event indicators, 0.
@@ -827,12 +715,7 @@ pub unsafe extern "C" fn fmi3GetNumberOfContinuousStates(c: Inst, n: *mut usize)
 #[no_mangle]
 pub unsafe extern "C" fn fmi3EnterStepMode(c: Inst) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |i| {
-            i.expect(&[State::Step], "entering step mode (this FMU has no event mode)")?;
-            Ok(())
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |i| i.enter_step_mode()) }
 }
 
 /// Co-simulation: a step (the outputs follow the inputs; the time advances).
@@ -853,11 +736,7 @@ pub unsafe extern "C" fn fmi3DoStep(
     // SAFETY: the caller's promise.
     unsafe {
         on_instance(this_export!(), c, |i| {
-            i.expect(&[State::Step], "a step")?;
-            if !(step >= 0.0) {
-                return Err(error(format!("communicationStepSize {step}: must not be negative")));
-            }
-            i.set_time(current + step);
+            i.do_step(current, step)?;
             for (flag, what) in [
                 (event_handling_needed, "eventHandlingNeeded"),
                 (terminate, "terminateSimulation"),

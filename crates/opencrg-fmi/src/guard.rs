@@ -3,8 +3,9 @@
 //! naming the export, after the instance is no longer borrowed (a logger that calls the
 //! FMU again finds it free).
 
-use crate::instance::{error, Instance, Refused, State};
+use crate::instance::{error, Instance, Refused};
 use crate::log::Status;
+use crate::states::State;
 use std::ffi::{c_char, c_void, CStr};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 

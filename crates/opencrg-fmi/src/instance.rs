@@ -3,6 +3,7 @@
 //! is global, so instances on different threads never meet.
 
 use crate::log::{Logger, Status};
+use crate::states::{Call, State};
 use opencrg_core::settings::Value;
 use opencrg_fmu::variables::{self, Parameter, Quantity, Start, Type};
 use opencrg_fmu::{compat_named, Wheels};
@@ -19,25 +20,6 @@ pub enum Interface {
     CoSimulation,
 }
 
-/// Where an instance is in FMI's state machine.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum State {
-    /// After instantiation (or reset).
-    Instantiated,
-    /// Between entering and leaving initialization.
-    Initialization,
-    /// Model exchange: event mode.
-    Event,
-    /// Model exchange: continuous-time mode.
-    ContinuousTime,
-    /// Co-simulation: between steps.
-    Step,
-    /// After terminate.
-    Terminated,
-    /// After a panic: only freeing is left.
-    Broken,
-}
-
 /// A call not done: its status and why.
 #[derive(Debug)]
 pub struct Refused {
@@ -50,19 +32,6 @@ pub struct Refused {
 /// Refuses with status Error.
 pub fn error(message: impl ToString) -> Refused {
     Refused { status: Status::Error, message: message.to_string() }
-}
-
-/// What a call does, for the check of the state it is made in.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Act {
-    /// Set an input.
-    SetInput,
-    /// Set a fixed parameter.
-    SetFixed,
-    /// Set a tunable parameter.
-    SetTunable,
-    /// Read any variable.
-    Get,
 }
 
 /// The value references of the last call that named only wheel quantities, decoded: an
@@ -185,42 +154,9 @@ impl Instance {
         self.interface
     }
 
-    /// Enters initialization mode: refused in another state than instantiated, and while
-    /// the road the FMU names outside itself is missing (`roadFile` must name one first).
-    pub fn enter_initialization(&mut self) -> Result<(), Refused> {
-        self.expect(&[State::Instantiated], "entering initialization mode")?;
-        if let Some(why) = self.fmu.missing() {
-            return Err(error(format!("{why}: set the parameter roadFile to the road's CRG file")));
-        }
-        self.state = State::Initialization;
-        Ok(())
-    }
-
-    /// Refuses a call made in a state that does not allow it.
-    pub fn expect(&self, allowed: &[State], what: &str) -> Result<(), Refused> {
-        if allowed.contains(&self.state) {
-            Ok(())
-        } else {
-            Err(error(format!("{what} is not allowed in the state {:?}", self.state)))
-        }
-    }
-
-    /// Refuses an act in a state that does not allow it.
-    fn may(&self, act: Act, name: &str) -> Result<(), Refused> {
-        use State::*;
-        let allowed: &[State] = match act {
-            Act::SetInput => &[Instantiated, Initialization, Event, ContinuousTime, Step],
-            Act::SetFixed => &[Instantiated, Initialization],
-            Act::SetTunable => &[Instantiated, Initialization, Event, Step],
-            Act::Get => &[Initialization, Event, ContinuousTime, Step, Terminated],
-        };
-        let what = match act {
-            Act::Get => format!("reading {name}"),
-            Act::SetInput => format!("setting the input {name}"),
-            Act::SetFixed => format!("setting the fixed parameter {name}"),
-            Act::SetTunable => format!("setting the tunable parameter {name}"),
-        };
-        self.expect(allowed, &what)
+    /// Why the road the FMU names outside itself cannot be read, if it cannot.
+    pub fn road_missing(&self) -> Option<&str> {
+        self.fmu.missing()
     }
 
     /// The variable's name, for messages.
@@ -267,7 +203,7 @@ impl Instance {
     /// moved since), the time, a real parameter.
     #[inline(always)]
     pub fn reals(&mut self, vrs: &[u32], out: &mut [f64]) -> Result<(), Refused> {
-        let readable = matches!(self.state, State::Initialization | State::Event | State::ContinuousTime | State::Step);
+        let readable = Call::Get.allowed_in(self.state);
         let friction = self.parameters.friction_default;
         if readable && vrs == self.last_get.vrs.as_slice() {
             let Instance { last_get, wheels, .. } = self;
@@ -296,7 +232,7 @@ impl Instance {
     #[cold]
     #[inline(never)]
     fn real_otherwise(&mut self, vr: u32) -> Result<f64, Refused> {
-        self.may(Act::Get, &self.name_of(vr))?;
+        self.expect(Call::Get, Some(&self.name_of(vr)))?;
         if let Some((i, q)) = self.wheel_real(vr) {
             return Ok(self.wheels.real(i, q, self.parameters.friction_default));
         }
@@ -314,7 +250,7 @@ impl Instance {
     /// Sets Real variables: the wheels' x and y, the friction default, real options.
     #[inline(always)]
     pub fn set_reals(&mut self, vrs: &[u32], values: &[f64]) -> Result<(), Refused> {
-        let settable = !matches!(self.state, State::Terminated | State::Broken);
+        let settable = Call::SetInput.allowed_in(self.state);
         if settable && vrs == self.last_set.vrs.as_slice() {
             let Instance { last_set, wheels, .. } = self;
             for (&(i, q), &value) in last_set.quantities.iter().zip(values) {
@@ -352,13 +288,13 @@ impl Instance {
     fn set_real_otherwise(&mut self, vr: u32, value: f64) -> Result<(), Refused> {
         if let Some((_, q)) = variables::wheel_of(self.kind, self.wheel_count, vr) {
             if q.is_input() {
-                return self.may(Act::SetInput, &self.name_of(vr));
+                return self.expect(Call::SetInput, Some(&self.name_of(vr)));
             }
             return Err(error(format!("{} is an output: it cannot be set", self.name_of(vr))));
         }
         match Parameter::from_vr(self.kind, vr) {
             Some(p @ Parameter::FrictionDefault) => {
-                self.may(Act::SetTunable, &p.name())?;
+                self.expect(Call::SetTunable, Some(&p.name()))?;
                 if !value.is_finite() {
                     return Err(error(format!("{} = {value}: a finite number is needed", p.name())));
                 }
@@ -366,7 +302,7 @@ impl Instance {
                 Ok(())
             }
             Some(p @ Parameter::Option(id)) if p.ty() == Type::Real => {
-                self.may(Act::SetFixed, &p.name())?;
+                self.expect(Call::SetFixed, Some(&p.name()))?;
                 self.set_option(id, Value::Double(value))
             }
             _ => Err(self.not_a(vr, "Real")),
@@ -376,7 +312,7 @@ impl Instance {
     /// An Integer variable.
     #[inline]
     pub fn integer(&mut self, vr: u32) -> Result<i32, Refused> {
-        self.may(Act::Get, &self.name_of(vr))?;
+        self.expect(Call::Get, Some(&self.name_of(vr)))?;
         if let Some((wheel, q)) = variables::wheel_of(self.kind, self.wheel_count, vr) {
             if q.ty() == Type::Integer {
                 return Ok(self.wheels.integer(wheel as usize - 1, q));
@@ -396,7 +332,7 @@ impl Instance {
     pub fn set_integer(&mut self, vr: u32, value: i32) -> Result<(), Refused> {
         match Parameter::from_vr(self.kind, vr) {
             Some(p @ Parameter::Option(id)) if p.ty() == Type::Integer => {
-                self.may(Act::SetFixed, &p.name())?;
+                self.expect(Call::SetFixed, Some(&p.name()))?;
                 self.set_option(id, Value::Int(value))
             }
             _ => Err(self.not_a(vr, "settable Integer")),
@@ -406,7 +342,7 @@ impl Instance {
     /// A Boolean variable.
     #[inline]
     pub fn boolean(&mut self, vr: u32) -> Result<bool, Refused> {
-        self.may(Act::Get, &self.name_of(vr))?;
+        self.expect(Call::Get, Some(&self.name_of(vr)))?;
         match variables::wheel_of(self.kind, self.wheel_count, vr) {
             Some((wheel, Quantity::OnRoad)) => Ok(self.wheels.on_road(wheel as usize - 1)),
             _ => Err(self.not_a(vr, "Boolean")),
@@ -422,7 +358,7 @@ impl Instance {
     pub fn strings(&mut self, vrs: &[u32]) -> Result<&[CString], Refused> {
         self.strings.clear();
         for &vr in vrs {
-            self.may(Act::Get, &self.name_of(vr))?;
+            self.expect(Call::Get, Some(&self.name_of(vr)))?;
             match Parameter::from_vr(self.kind, vr) {
                 Some(Parameter::Compat) => self.strings.push(crate::log::c_text(&self.parameters.compat)),
                 Some(Parameter::RoadFile) => self.strings.push(crate::log::c_text(self.fmu.road_file())),
@@ -436,7 +372,7 @@ impl Instance {
     pub fn set_string(&mut self, vr: u32, value: &str) -> Result<(), Refused> {
         match Parameter::from_vr(self.kind, vr) {
             Some(p @ Parameter::Compat) => {
-                self.may(Act::SetFixed, &p.name())?;
+                self.expect(Call::SetFixed, Some(&p.name()))?;
                 let compat = compat_named(value).map_err(error)?;
                 let mut fmu_compat = self.parameters.clone();
                 fmu_compat.compat = value.trim().to_string();
@@ -445,7 +381,7 @@ impl Instance {
                 self.rebuild()
             }
             Some(p @ Parameter::RoadFile) => {
-                self.may(Act::SetFixed, &p.name())?;
+                self.expect(Call::SetFixed, Some(&p.name()))?;
                 self.fmu.set_road_file(value).map_err(error)?;
                 self.take_road_starts();
                 self.rebuild()

@@ -10,11 +10,13 @@
 // Comparisons like `!(x >= 0.0)` are meant to reject NaN as well; they stay.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+mod abi;
 mod fmi2;
 mod fmi3;
 mod guard;
 mod instance;
 mod log;
+mod states;
 mod uri;
 
 pub use fmi2::*;
