@@ -677,7 +677,7 @@ pub unsafe extern "C" fn fmi3GetEventIndicators(c: Inst, values: *mut f64, n: us
     unsafe { on_instance(this_export!(), c, |i| i.event_indicators(slice_mut(values, n, "eventIndicators")?)) }
 }
 
-/// Model exchange: the number of event indicators, 0.
+/// Model exchange: the number of event indicators, one per wheel.
 ///
 /// # Safety
 /// `c` is null or a live instance of this library; `n` null or writable.
@@ -685,8 +685,8 @@ pub unsafe extern "C" fn fmi3GetEventIndicators(c: Inst, values: *mut f64, n: us
 pub unsafe extern "C" fn fmi3GetNumberOfEventIndicators(c: Inst, n: *mut usize) -> Status {
     // SAFETY: the caller's promise.
     unsafe {
-        on_instance(this_export!(), c, |_| {
-            slice_mut(n, 1, "nEventIndicators")?[0] = 0;
+        on_instance(this_export!(), c, |i| {
+            slice_mut(n, 1, "nEventIndicators")?[0] = i.event_indicator_count();
             Ok(())
         })
     }

@@ -314,8 +314,13 @@ impl Instance {
     pub fn integer(&mut self, vr: u32) -> Result<i32, Refused> {
         self.expect(Call::Get, Some(&self.name_of(vr)))?;
         if let Some((wheel, q)) = variables::wheel_of(self.kind, self.wheel_count, vr) {
-            if q.ty() == Type::Integer {
-                return Ok(self.wheels.integer(wheel as usize - 1, q));
+            let i = wheel as usize - 1;
+            match q {
+                // Model exchange's continuous-time mode: as of the last event.
+                Quantity::Road if self.state == State::ContinuousTime => return Ok(self.wheels.latched(i).1),
+                Quantity::Lane if self.state == State::ContinuousTime => return Ok(self.wheels.latched(i).2),
+                _ if q.ty() == Type::Integer => return Ok(self.wheels.integer(i, q)),
+                _ => {}
             }
             return Err(self.not_a(vr, "Integer"));
         }
@@ -344,6 +349,10 @@ impl Instance {
     pub fn boolean(&mut self, vr: u32) -> Result<bool, Refused> {
         self.expect(Call::Get, Some(&self.name_of(vr)))?;
         match variables::wheel_of(self.kind, self.wheel_count, vr) {
+            // Model exchange's continuous-time mode: as of the last event.
+            Some((wheel, Quantity::OnRoad)) if self.state == State::ContinuousTime => {
+                Ok(self.wheels.latched(wheel as usize - 1).0)
+            }
             Some((wheel, Quantity::OnRoad)) => Ok(self.wheels.on_road(wheel as usize - 1)),
             _ => Err(self.not_a(vr, "Boolean")),
         }
@@ -456,6 +465,28 @@ impl Instance {
         self.wheels = self.fmu.wheels(&[]).map_err(error)?;
         self.time = 0.0;
         self.state = State::Instantiated;
+        Ok(())
+    }
+
+    /// Model exchange: the wheels' discrete outputs (on the road, road, lane) as they are
+    /// now become those the continuous-time mode answers, until the next event.
+    pub fn latch_discrete(&mut self) {
+        self.wheels.latch();
+    }
+
+    /// How many event indicators: one per wheel.
+    pub fn event_indicator_count(&self) -> usize {
+        self.wheels.len()
+    }
+
+    /// Model exchange: each wheel's event indicator into `out` (one per wheel).
+    pub fn indicators(&mut self, out: &mut [f64]) -> Result<(), Refused> {
+        if out.len() != self.wheels.len() {
+            return Err(error(format!("{} event indicators asked for: this FMU has {}", out.len(), self.wheels.len())));
+        }
+        for (i, value) in out.iter_mut().enumerate() {
+            *value = self.wheels.real(i, Quantity::EventIndicator, 0.0);
+        }
         Ok(())
     }
 

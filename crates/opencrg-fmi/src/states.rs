@@ -163,7 +163,9 @@ impl Instance {
             Interface::ModelExchange => State::Event,
             Interface::CoSimulation => State::Step,
         };
-        self.go(Call::ExitInitialization, next)
+        self.go(Call::ExitInitialization, next)?;
+        self.latch_discrete();
+        Ok(())
     }
 
     /// Model exchange: enters event mode.
@@ -171,14 +173,19 @@ impl Instance {
         self.go(Call::EnterEventMode, State::Event)
     }
 
-    /// Model exchange: no discrete states to update, no further event asked for.
+    /// Model exchange: the discrete outputs (on the road, road, lane) take the wheels'
+    /// present values; no further event is asked for.
     pub fn update_discrete_states(&mut self) -> Result<(), Refused> {
-        self.expect(Call::UpdateDiscreteStates, None)
+        self.expect(Call::UpdateDiscreteStates, None)?;
+        self.latch_discrete();
+        Ok(())
     }
 
     /// Model exchange: enters continuous-time mode.
     pub fn enter_continuous_time(&mut self) -> Result<(), Refused> {
-        self.go(Call::EnterContinuousTime, State::ContinuousTime)
+        self.go(Call::EnterContinuousTime, State::ContinuousTime)?;
+        self.latch_discrete();
+        Ok(())
     }
 
     /// Model exchange: an integrator step done (no step event is asked for).
@@ -193,14 +200,11 @@ impl Instance {
         Ok(())
     }
 
-    /// Model exchange: the event indicators, into `out` (there are none: `out` must be
-    /// empty).
+    /// Model exchange: the event indicators into `out`, one per wheel: 1 while its
+    /// on the road, road and lane are those of the last event, -1 once one differs.
     pub fn event_indicators(&mut self, out: &mut [f64]) -> Result<(), Refused> {
         self.expect(Call::GetEventIndicators, None)?;
-        match out.len() {
-            0 => Ok(()),
-            n => Err(error(format!("{n} event indicators asked for: this FMU has none"))),
-        }
+        self.indicators(out)
     }
 
     /// Co-simulation: step mode, where an instance is after initialization.

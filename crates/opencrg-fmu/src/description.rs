@@ -82,6 +82,7 @@ fn causality(c: Causality) -> &'static str {
         Causality::Output => "output",
         Causality::Parameter => "parameter",
         Causality::Independent => "independent",
+        Causality::Local => "local",
     }
 }
 
@@ -111,6 +112,7 @@ fn initial_parameters(kind: Kind, output: &Variable) -> Vec<u32> {
 pub fn model_description(fmi: Fmi, kind: Kind, meta: &Meta, variables: &[Variable]) -> String {
     let mut x = String::new();
     let id = escape(&meta.identifier);
+    let indicators: Vec<&Variable> = variables.iter().filter(|v| v.causality == Causality::Local).collect();
     let _ = writeln!(x, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>");
     let (version, token_name) = match fmi {
         Fmi::V2 => ("2.0", "guid"),
@@ -123,7 +125,10 @@ pub fn model_description(fmi: Fmi, kind: Kind, meta: &Meta, variables: &[Variabl
         escape(&meta.token),
         escape(&meta.description),
         escape(&meta.generation_tool),
-        if fmi == Fmi::V2 { "\n  numberOfEventIndicators=\"0\"" } else { "" },
+        match fmi {
+            Fmi::V2 => format!("\n  numberOfEventIndicators=\"{}\"", indicators.len()),
+            Fmi::V3 => String::new(),
+        },
     );
     match fmi {
         Fmi::V2 => {
@@ -212,8 +217,12 @@ pub fn model_description(fmi: Fmi, kind: Kind, meta: &Meta, variables: &[Variabl
         depends.sort_by_key(|&d| index_of(d));
         unknown(&mut x, initial, v, &depends);
     }
-    if fmi == Fmi::V2 {
-        let _ = writeln!(x, "    </InitialUnknowns>");
+    match fmi {
+        Fmi::V2 => {
+            let _ = writeln!(x, "    </InitialUnknowns>");
+        }
+        // FMI 3 names its event indicators here (FMI 2 counts them, in the wheels' order).
+        Fmi::V3 => indicators.iter().for_each(|v| unknown(&mut x, "<EventIndicator", v, &v.depends_on)),
     }
     let _ = writeln!(x, "  </ModelStructure>\n</fmiModelDescription>");
     x

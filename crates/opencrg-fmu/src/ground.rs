@@ -142,7 +142,12 @@ struct Wheel {
     at: [f64; 2],
     evaluator: Evaluator,
     answer: Answer,
+    /// Its discrete answers (on the road, road, lane) as of the last event.
+    latched: Discrete,
 }
+
+/// A wheel's discrete answers: whether it is on the road, the road and the lane.
+type Discrete = (bool, i32, i32);
 
 /// The wheels of one FMU instance: their positions and answers.
 pub struct Wheels {
@@ -179,7 +184,12 @@ impl Wheels {
                 }
                 Ground::Map(surface) => Evaluator::Map(surface.probe(), surface.probe()),
             };
-            wheels.push(Wheel { at: [start.0, start.1], evaluator, answer: Answer::default() });
+            wheels.push(Wheel {
+                at: [start.0, start.1],
+                evaluator,
+                answer: Answer::default(),
+                latched: (false, -1, 0),
+            });
         }
         let ranges = match ground {
             Ground::Crg(road) => Some((road.u_range(), road.v_range())),
@@ -251,6 +261,21 @@ impl Wheels {
         wheel.base(ranges);
         wheel.answer.on_road
     }
+
+    /// Every wheel's discrete answers (on the road, road, lane) as they are now become
+    /// those of the last event (model exchange: at initialization and at each event).
+    pub fn latch(&mut self) {
+        let ranges = self.ranges;
+        for wheel in &mut self.wheels {
+            wheel.base(ranges);
+            wheel.latched = wheel.discrete();
+        }
+    }
+
+    /// Wheel `i`'s (0-based) discrete answers as of the last event.
+    pub fn latched(&self, i: usize) -> (bool, i32, i32) {
+        self.wheels[i].latched
+    }
 }
 
 impl Wheel {
@@ -297,11 +322,18 @@ impl Wheel {
         }
     }
 
+    /// The discrete answers (the base answer known).
+    fn discrete(&self) -> Discrete {
+        (self.answer.on_road, self.answer.road, self.answer.lane)
+    }
+
     /// A Real quantity other than the height (the base answer known).
     #[inline(never)]
     fn other(&mut self, quantity: Quantity, friction_default: f64) -> f64 {
         let a = &self.answer;
         match quantity {
+            Quantity::EventIndicator if self.discrete() == self.latched => 1.0,
+            Quantity::EventIndicator => -1.0,
             Quantity::Friction if a.on_road && a.friction.is_finite() => a.friction,
             Quantity::Friction => friction_default,
             Quantity::U | Quantity::V | Quantity::S | Quantity::T => {

@@ -41,6 +41,8 @@ pub enum Causality {
     Parameter,
     /// The simulation time (FMI 3 only).
     Independent,
+    /// Computed by the FMU for its own ends: the event indicators of model exchange.
+    Local,
 }
 
 /// How a variable may change.
@@ -48,7 +50,7 @@ pub enum Causality {
 pub enum Variability {
     /// At any time.
     Continuous,
-    /// At events (here: wherever the inputs move).
+    /// At events only (model exchange: the event indicators announce them).
     Discrete,
     /// Only before the simulation.
     Fixed,
@@ -104,6 +106,9 @@ pub enum Quantity {
     Heading = 14,
     /// A CRG file's curvature at (u, v).
     Curvature = 15,
+    /// Model exchange's event indicator: 1 while the wheel's on the road, road and lane
+    /// are those of the last event, -1 once one of them differs.
+    EventIndicator = 16,
 }
 
 /// Everything about one wheel quantity.
@@ -132,7 +137,7 @@ const M: Option<&str> = Some("m");
 
 /// Every wheel quantity, in value reference order.
 #[rustfmt::skip]
-const QUANTITIES: [QuantityInfo; 16] = [
+const QUANTITIES: [QuantityInfo; 17] = [
     q(Quantity::X, "x", Type::Real, M, None, "x of the wheel's contact point, in the road's frame"),
     q(Quantity::Y, "y", Type::Real, M, None, "y of the wheel's contact point, in the road's frame"),
     q(Quantity::Z, "z", Type::Real, M, None, "height of the road surface under the wheel"),
@@ -149,6 +154,7 @@ const QUANTITIES: [QuantityInfo; 16] = [
     q(Quantity::V, "v", Type::Real, M, Some(Kind::Crg), "v across the CRG reference line under the wheel"),
     q(Quantity::Heading, "heading", Type::Real, Some("rad"), Some(Kind::Crg), "heading of the CRG reference line at the wheel's u"),
     q(Quantity::Curvature, "curvature", Type::Real, Some("1/m"), Some(Kind::Crg), "curvature at the wheel's (u, v)"),
+    q(Quantity::EventIndicator, "eventIndicator", Type::Real, None, None, "model exchange's event indicator: 1 while onRoad, road and lane are those of the last event, -1 once one of them differs"),
 ];
 
 impl Quantity {
@@ -392,11 +398,16 @@ pub fn variables(
         for info in QUANTITIES.iter().filter(|i| i.quantity.of(kind)) {
             let quantity = info.quantity;
             let input = quantity.is_input();
+            let causality = match quantity {
+                _ if input => Causality::Input,
+                Quantity::EventIndicator => Causality::Local,
+                _ => Causality::Output,
+            };
             out.push(Variable {
                 name: format!("wheel[{wheel}].{}", info.name),
                 vr: wheel_vr(wheel, quantity),
                 ty: info.ty,
-                causality: if input { Causality::Input } else { Causality::Output },
+                causality,
                 variability: if info.ty == Type::Real { Variability::Continuous } else { Variability::Discrete },
                 unit: info.unit,
                 description: info.description.into(),
@@ -425,7 +436,7 @@ mod tests {
         assert_eq!(wheel_of(Kind::Map, 4, 108), Some((1, Quantity::S)));
         assert_eq!(wheel_of(Kind::Map, 4, 112), None, "u is a CRG file's");
         assert_eq!(wheel_of(Kind::Map, 4, 16), None, "a parameter's range");
-        assert_eq!(wheel_of(Kind::Map, 4, 116), None, "no quantity 16");
+        assert_eq!(wheel_of(Kind::Map, 4, 117), None, "no quantity 17");
         for (k, info) in QUANTITIES.iter().enumerate() {
             assert_eq!(info.quantity as usize, k, "{}", info.name);
         }

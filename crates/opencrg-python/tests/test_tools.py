@@ -126,7 +126,7 @@ def test_write_fmu_packs_what_the_command_packs(tmp_path, road_file, opencrg_com
     import zipfile
 
     report = opencrg.write_fmu(road_file, tmp_path / "py.fmu", wheels=2, fmi=3)
-    assert report["identifier"] == "curved" and report["variables"] == 1 + 11 + 2 * 12, report
+    assert report["identifier"] == "curved" and report["variables"] == 1 + 11 + 2 * 13, report
     machine = platform.machine().lower()
     here = {"amd64": "x86_64", "arm64": "aarch64"}.get(machine, machine) + "-" + platform.system().lower()
     assert here in report["platforms"], report

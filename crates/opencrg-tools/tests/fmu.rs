@@ -46,7 +46,7 @@ fn a_crg_file_is_packed_with_its_description_resources_and_binary_the_same_each_
     let d = dir("crg");
     let report = write_fmu(&demo("demo_road.crg"), &d.join("a.fmu"), &options(&d, Fmi::V2, 4)).unwrap();
     assert_eq!(report.identifier, "demo_road");
-    assert_eq!(report.variables, 11 + 4 * 12);
+    assert_eq!(report.variables, 11 + 4 * 13);
     let got = entries(&d.join("a.fmu"));
     let names: Vec<&str> = got.iter().map(|e| e.0.as_str()).collect();
     assert_eq!(
@@ -63,6 +63,7 @@ fn a_crg_file_is_packed_with_its_description_resources_and_binary_the_same_each_
     let description = text(&got, "modelDescription.xml");
     assert!(description.contains(&format!("guid=\"{}\"", config.token)), "the token ties them");
     assert!(description.contains("name=\"wheel[4].curvature\"") && !description.contains("wheel[5]"));
+    assert!(description.contains("numberOfEventIndicators=\"4\""), "one event indicator per wheel");
     // The same road packed alike: the same bytes.
     write_fmu(&demo("demo_road.crg"), &d.join("b.fmu"), &options(&d, Fmi::V2, 4)).unwrap();
     assert_eq!(std::fs::read(d.join("a.fmu")).unwrap(), std::fs::read(d.join("b.fmu")).unwrap());
@@ -74,6 +75,7 @@ fn a_crg_file_is_packed_with_its_description_resources_and_binary_the_same_each_
     assert!(description.contains("fmiVersion=\"3.0\"") && description.contains("causality=\"independent\""));
     assert!(!description.contains(&config.token));
     assert!(description.contains("friction under 1 wheel\""), "one wheel, not one wheels");
+    assert!(description.contains("<EventIndicator valueReference=\"116\" dependencies=\"100 101\""));
 }
 
 #[test]

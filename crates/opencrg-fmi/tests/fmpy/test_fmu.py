@@ -28,8 +28,8 @@ import zipfile
 import fmpy
 import numpy as np
 import pytest
-from fmpy.fmi2 import FMU2Slave, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
-from fmpy.fmi3 import FMU3Slave
+from fmpy.fmi2 import FMU2Model, FMU2Slave, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
+from fmpy.fmi3 import FMU3Model, FMU3Slave
 from fmpy.validation import validate_fmu
 
 ROOT = pathlib.Path(__file__).resolve().parents[4]
@@ -214,8 +214,13 @@ def wheel_path(xy_of, n=160):
 
 
 def simulate(fmu, fmi_type, table, outputs, start_values=None):
+    """The FMU along the table; model exchange with fixed steps at the table's times, so
+    that a map's wheel meets the positions the oracle replays (a variable-step solver
+    reads the event indicators at positions between them too, and a map's wheel answers
+    as a probe meeting each position set in turn)."""
     stop = float(table["time"][-1])
-    return fmpy.simulate_fmu(fmu, fmi_type=fmi_type, input=table, output=outputs, step_size=DT,
+    solver = "Euler" if fmi_type == "ModelExchange" else None
+    return fmpy.simulate_fmu(fmu, fmi_type=fmi_type, input=table, output=outputs, step_size=DT, solver=solver,
                              output_interval=DT, stop_time=stop, start_values=start_values or {})
 
 
@@ -476,3 +481,56 @@ def test_a_road_left_outside_the_fmu_is_read_in_place_where_it_lies(work, fmi, m
     slave.freeInstance()
     shutil.rmtree(unzipped, ignore_errors=True)
     answers_as_the_c_api(simulate(fmu, "CoSimulation", table, outputs, start_values={"roadFile": str(moved)}))
+
+
+@pytest.mark.parametrize("fmi", [2, 3])
+def test_model_exchange_changes_discrete_outputs_at_events_its_indicators_announce(work, fmi):
+    """onRoad (a discrete output) holds in continuous-time mode; the wheel's event
+    indicator turns -1 when it would change; at the event it takes the new value."""
+    fmu = pack(work / "rough.crg", work / f"events{fmi}.fmu", fmi, wheels=2)
+    md = fmpy.read_model_description(str(fmu))
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    if fmi == 2:
+        assert md.numberOfEventIndicators == 2
+    else:
+        assert [e.variable.name for e in md.eventIndicators] == ["wheel[1].eventIndicator", "wheel[2].eventIndicator"]
+    unzipped = fmpy.extract(str(fmu))
+    model_class = FMU2Model if fmi == 2 else FMU3Model
+    model = model_class(guid=md.guid, unzipDirectory=unzipped, modelIdentifier=md.modelExchange.modelIdentifier)
+    model.instantiate()
+    set_real = model.setReal if fmi == 2 else model.setFloat64
+    on, off = (231.0, 152.0), (1e5, 1e5)
+    if fmi == 2:
+        model.setupExperiment(startTime=0.0)
+        model.enterInitializationMode()
+    else:
+        model.enterInitializationMode(startTime=0.0)
+    set_real([vr["wheel[1].x"], vr["wheel[1].y"], vr["wheel[2].x"], vr["wheel[2].y"]], [*on, *on])
+    model.exitInitializationMode()
+    model.newDiscreteStates() if fmi == 2 else model.updateDiscreteStates()
+    model.enterContinuousTimeMode()
+    z = (ctypes.c_double * 2)()
+
+    def indicators():
+        model.getEventIndicators(z, 2)
+        return list(z)
+
+    on_road = [vr["wheel[1].onRoad"], vr["wheel[2].onRoad"]]
+    assert model.getBoolean(on_road) == [True, True] and indicators() == [1.0, 1.0]
+    # Wheel 2 leaves the road between events: its output holds, its indicator says so.
+    model.setTime(0.1)
+    set_real([vr["wheel[2].x"], vr["wheel[2].y"]], list(off))
+    assert model.getBoolean(on_road) == [True, True]
+    assert indicators() == [1.0, -1.0]
+    # The event: the new value, the indicator back to 1.
+    model.enterEventMode()
+    model.newDiscreteStates() if fmi == 2 else model.updateDiscreteStates()
+    assert model.getBoolean(on_road) == [True, False]
+    model.enterContinuousTimeMode()
+    assert model.getBoolean(on_road) == [True, False] and indicators() == [1.0, 1.0]
+    # Back onto the road.
+    set_real([vr["wheel[2].x"], vr["wheel[2].y"]], list(on))
+    assert model.getBoolean(on_road) == [True, False] and indicators() == [1.0, -1.0]
+    model.terminate()
+    model.freeInstance()
+    shutil.rmtree(unzipped, ignore_errors=True)
