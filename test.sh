@@ -103,6 +103,12 @@ step "WebAssembly"
 # against `opencrg odr eval`, the guide's example, in Node; the page in headless Chromium
 # (probes of a road and a map as the command answers, the top view drawn).
 cargo clippy -q -p opencrg-wasm --target wasm32-unknown-unknown -- -D warnings
+# The WebAssembly build takes the toolkit without its FMU and point-cloud wings.
+if cargo tree -q -p opencrg-wasm --target wasm32-unknown-unknown -e normal --prefix none |
+    grep -E '^(zip|flate2|las|laz|spade|opencrg-fmu) v'; then
+    echo "the WebAssembly build pulls the crates above" >&2
+    exit 1
+fi
 packaging/wasm.sh target/wasm-dist
 for profile in current 2.0.1; do
     golden=golden; [ $profile = current ] || golden=golden-$profile

@@ -35,6 +35,7 @@ mod analysis {
     pub mod roughness;
 }
 mod export {
+    #[cfg(feature = "fmu")]
     pub mod fmu;
     pub(crate) mod gltf;
     pub mod map_mesh;
@@ -51,7 +52,9 @@ mod make {
     pub(crate) mod filter;
     pub(crate) mod flip;
     pub(crate) mod generate;
+    #[cfg(feature = "point-clouds")]
     pub(crate) mod import;
+    pub(crate) mod las_points;
     pub(crate) mod nodes;
     pub(crate) mod path;
     pub(crate) mod point_files;
@@ -59,7 +62,9 @@ mod make {
 }
 
 pub use analysis::{iri, psd, roughness};
-pub use export::{fmu, map_mesh, mesh, mesh_files, simplify, view};
+#[cfg(feature = "fmu")]
+pub use export::fmu;
+pub use export::{map_mesh, mesh, mesh_files, simplify, view};
 pub use make::append::append;
 pub use make::channels::{change_channel, ChannelAction, LineChannel};
 pub use make::compare::{compare, Comparison};
@@ -67,6 +72,7 @@ pub use make::cut::cut;
 pub use make::filter::{filter, Filter};
 pub use make::flip::flip;
 pub use make::generate::{generate, Layout, Points, Surface};
+#[cfg(feature = "point-clouds")]
 pub use make::import::{import, Import};
 pub use make::nodes::Progress;
 pub use make::point_files::{parse_points, read_points};

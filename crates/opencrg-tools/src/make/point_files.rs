@@ -1,5 +1,5 @@
 //! Reading points: text tables (CSV, XYZ: columns x, y and z by name or position),
-//! PLY (text or binary) and LAS/LAZ (through the `las` crate).
+//! PLY (text or binary) and LAS/LAZ (`las_points`, with the `point-clouds` feature).
 
 use super::generate::Points;
 use opencrg_core::{Error, Location, Result};
@@ -9,9 +9,7 @@ use std::path::Path;
 /// text table. Text tables give z when they have a third column (or one named z).
 pub fn read_points(path: &Path) -> Result<Points> {
     if is_las(path) {
-        let reader = las::Reader::from_path(path).map_err(las_error(path))?;
-        let size = std::fs::metadata(path).map_or(0, |m| m.len());
-        return read_las(reader, path, size);
+        return super::las_points::read_file(path);
     }
     let bytes = std::fs::read(path).map_err(|source| Error::reading(path, source))?;
     parse_points(&bytes, path)
@@ -21,8 +19,7 @@ pub fn read_points(path: &Path) -> Result<Points> {
 pub fn parse_points(bytes: &[u8], name: &Path) -> Result<Points> {
     let ext = name.extension().map(|e| e.to_string_lossy().to_ascii_lowercase()).unwrap_or_default();
     if is_las(name) {
-        let reader = las::Reader::new(std::io::Cursor::new(bytes.to_vec())).map_err(las_error(name))?;
-        read_las(reader, name, bytes.len() as u64)
+        super::las_points::read_bytes(bytes, name)
     } else if ext == "ply" || bytes.starts_with(b"ply\n") || bytes.starts_with(b"ply\r\n") {
         read_ply(name, bytes)
     } else {
@@ -35,11 +32,7 @@ fn is_las(path: &Path) -> bool {
     path.extension().is_some_and(|e| e.eq_ignore_ascii_case("las") || e.eq_ignore_ascii_case("laz"))
 }
 
-fn las_error(path: &Path) -> impl Fn(las::Error) -> Error + '_ {
-    move |e| bad(path, 0, "LAS", e.to_string())
-}
-
-fn bad(path: &Path, line: usize, field: &str, message: impl Into<String>) -> Error {
+pub(crate) fn bad(path: &Path, line: usize, field: &str, message: impl Into<String>) -> Error {
     Error::format(path, if line == 0 { Location::File } else { Location::Line(line) }, field, message)
 }
 
@@ -254,25 +247,5 @@ fn read_ply(path: &Path, bytes: &[u8]) -> Result<Points> {
     if iz.is_some() {
         points.z = Some(z);
     }
-    Ok(points)
-}
-
-/// The points of a LAS/LAZ reader over `size` bytes.
-fn read_las(mut reader: las::Reader, path: &Path, size: u64) -> Result<Points> {
-    let err = las_error(path);
-    // Room for what the file can hold at most (a point takes a byte at least, even
-    // compressed), not for what its header claims.
-    let n = reader.header().number_of_points().min(size) as usize;
-    let mut points = Points { x: Vec::with_capacity(n), y: Vec::with_capacity(n), z: None };
-    let mut z = Vec::with_capacity(n);
-    let mut chunk = las::PointDataBuilder::new().for_header(reader.header()).build();
-    // Chunks of 16 MB whatever the record length the header claims (up to 64 kB a point).
-    let per_chunk = ((16u64 << 20) / u64::from(reader.header().point_format().len()).max(1)).max(1);
-    while reader.fill_points(per_chunk, &mut chunk).map_err(&err)? > 0 {
-        points.x.extend(chunk.x());
-        points.y.extend(chunk.y());
-        z.extend(chunk.z());
-    }
-    points.z = Some(z);
     Ok(points)
 }
