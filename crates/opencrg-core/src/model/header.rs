@@ -135,7 +135,7 @@ pub struct EndsGiven {
 }
 
 /// The `$ROAD_CRG` values the road uses.
-#[derive(Clone, Copy)]
+#[derive(Clone, Copy, PartialEq, Eq)]
 pub(crate) enum RoadKey {
     StartU,
     EndU,
@@ -178,6 +178,11 @@ pub(crate) const ROAD_KEYS: [(&str, RoadKey); 18] = [
     ("long_section_v_left", RoadKey::VLeft),
     ("long_section_v_increment", RoadKey::VIncrement),
 ];
+
+/// The keyword (lower case) of a `$ROAD_CRG` value, from [`ROAD_KEYS`].
+pub(crate) fn keyword_of(key: RoadKey) -> &'static str {
+    ROAD_KEYS.iter().find(|(_, k)| *k == key).map_or("", |(word, _)| word)
+}
 
 impl RoadParams {
     /// The values given, under their keywords (upper case), then the other keys of the

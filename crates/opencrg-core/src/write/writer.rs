@@ -10,7 +10,7 @@
 use crate::base::error::{Error, Result};
 use crate::base::settings::{Accepts, Family, Settings, Value, SETTINGS};
 use crate::model::grid::{bank_v, VLayout};
-use crate::model::header::DataFormat;
+use crate::model::header::{keyword_of, DataFormat, RoadKey, OFFSET_KEYS};
 use crate::model::road::Road;
 use std::io::{self, BufWriter, Write};
 use std::path::Path;
@@ -55,96 +55,103 @@ fn value_text(v: Value) -> String {
 
 /// Writes `road` as a CRG file to any writer.
 pub fn write_to(road: &Road, out: &mut impl Write, format: DataFormat) -> io::Result<()> {
-    let l = &road.line;
-    let g = &road.grid;
+    write_header(road, out)?;
+    let by_points = write_definition(road, out, format)?;
+    write_data(road, out, format, by_points)
+}
+
+/// A section's opening line, after the rule between sections.
+fn section(out: &mut impl Write, name: &str) -> io::Result<()> {
+    writeln!(out, "$!**********************************************************************")?;
+    writeln!(out, "{name}")
+}
+
+/// The `$ROAD_CRG` values written, in this order: each value's key (whose keyword the
+/// reader's table gives), the value and whether it is written.
+fn road_values(road: &Road) -> [(RoadKey, f64, bool); 18] {
+    let (l, g) = (&road.line, &road.grid);
+    let ends_xy = l.defined.x_end && l.defined.y_end;
+    // The long sections' own range (a road read from a file without it holds 0 and 0;
+    // the grid values then carry the banking's share the change of range moves).
+    let sections = g.sections_range();
+    [
+        (RoadKey::StartU, l.u_first, true),
+        (RoadKey::EndU, l.u_last, true),
+        (RoadKey::Increment, l.u_inc, true),
+        (RoadKey::StartX, l.x_first, true),
+        (RoadKey::StartY, l.y_first, true),
+        (RoadKey::EndX, l.x_last, ends_xy),
+        (RoadKey::EndY, l.y_last, ends_xy),
+        (RoadKey::StartPhi, l.phi_first, true),
+        (RoadKey::EndPhi, l.phi_last, true),
+        (RoadKey::StartZ, l.z_first, l.defined.z_start),
+        (RoadKey::EndZ, l.z_last, l.defined.z_end),
+        (RoadKey::StartSlope, l.slope_first, l.slope_first != 0.0),
+        (RoadKey::EndSlope, l.slope_last, l.slope_last != 0.0),
+        (RoadKey::StartBank, l.bank_first, l.bank_first != 0.0),
+        (RoadKey::EndBank, l.bank_last, l.bank_last != 0.0),
+        (RoadKey::VRight, sections.0, true),
+        (RoadKey::VLeft, sections.1, true),
+        (RoadKey::VIncrement, g.v_inc, g.layout == VLayout::Indexed),
+    ]
+}
+
+/// The comments, `$ROAD_CRG` and the options, modifiers and `$ROAD_CRG_MPRO` sections.
+fn write_header(road: &Road, out: &mut impl Write) -> io::Result<()> {
     writeln!(out, "$CT")?;
     for c in &road.header.comments {
         writeln!(out, "{c}")?;
     }
     writeln!(out, "written by opencrg {}", env!("CARGO_PKG_VERSION"))?;
-    writeln!(out, "$!**********************************************************************")?;
-    writeln!(out, "$ROAD_CRG")?;
+    section(out, "$ROAD_CRG")?;
     let mut kv = |k: &str, v: f64| writeln!(out, "{k:<25}= {v:?}");
-    kv("REFERENCE_LINE_START_U", l.u_first)?;
-    kv("REFERENCE_LINE_END_U", l.u_last)?;
-    kv("REFERENCE_LINE_INCREMENT", l.u_inc)?;
-    kv("REFERENCE_LINE_START_X", l.x_first)?;
-    kv("REFERENCE_LINE_START_Y", l.y_first)?;
-    if l.defined.x_end && l.defined.y_end {
-        kv("REFERENCE_LINE_END_X", l.x_last)?;
-        kv("REFERENCE_LINE_END_Y", l.y_last)?;
-    }
-    kv("REFERENCE_LINE_START_PHI", l.phi_first)?;
-    kv("REFERENCE_LINE_END_PHI", l.phi_last)?;
-    if l.defined.z_start {
-        kv("REFERENCE_LINE_START_Z", l.z_first)?;
-    }
-    if l.defined.z_end {
-        kv("REFERENCE_LINE_END_Z", l.z_last)?;
-    }
-    for (k, v) in [
-        ("REFERENCE_LINE_START_S", l.slope_first),
-        ("REFERENCE_LINE_END_S", l.slope_last),
-        ("REFERENCE_LINE_START_B", l.bank_first),
-        ("REFERENCE_LINE_END_B", l.bank_last),
-    ] {
-        if v != 0.0 {
-            kv(k, v)?;
+    for (key, v, written) in road_values(road) {
+        if written {
+            kv(&keyword_of(key).to_ascii_uppercase(), v)?;
         }
-    }
-    // The long sections' own range (a road read from a file without it holds 0 and 0;
-    // the grid values below then carry the banking's share the change of range moves).
-    let sections = g.sections_range();
-    kv("LONG_SECTION_V_RIGHT", sections.0)?;
-    kv("LONG_SECTION_V_LEFT", sections.1)?;
-    if g.layout == VLayout::Indexed {
-        kv("LONG_SECTION_V_INCREMENT", g.v_inc)?;
     }
     // The global origin as it is now (modifiers that moved the road changed it), where
     // the file gave one or it is not the default.
     let o = road.global_origin();
     if road.header.road.offset.iter().any(Option::is_some) || o != Default::default() {
-        for (k, v) in crate::model::header::OFFSET_KEYS.iter().zip([o.x, o.y, o.z, o.phi]) {
+        for (k, v) in OFFSET_KEYS.iter().zip([o.x, o.y, o.z, o.phi]) {
             kv(k, v)?;
         }
     }
     for (k, v) in &road.header.road.extra {
         kv(k, *v)?;
     }
-    writeln!(out, "$!**********************************************************************")?;
-    writeln!(out, "$ROAD_CRG_OPTS")?;
-    for (name, v) in written(&road.options, Family::Option) {
-        writeln!(out, "{name:<25}= {}", value_text(v))?;
-    }
-    writeln!(out, "$!**********************************************************************")?;
-    writeln!(out, "$ROAD_CRG_MODS")?;
-    for (name, v) in written(&road.modifiers, Family::Modifier) {
-        writeln!(out, "{name:<25}= {}", value_text(v))?;
+    for (name, family) in [("$ROAD_CRG_OPTS", Family::Option), ("$ROAD_CRG_MODS", Family::Modifier)] {
+        section(out, name)?;
+        let settings = if family == Family::Option { &road.options } else { &road.modifiers };
+        for (name, v) in written(settings, family) {
+            writeln!(out, "{name:<25}= {}", value_text(v))?;
+        }
     }
     if !road.header.mpro.is_empty() {
-        writeln!(out, "$!**********************************************************************")?;
-        writeln!(out, "$ROAD_CRG_MPRO")?;
+        section(out, "$ROAD_CRG_MPRO")?;
         for (k, v) in &road.header.mpro {
             writeln!(out, "{k:<25}= {v}")?;
         }
     }
-    writeln!(out, "$!**********************************************************************")?;
-    writeln!(out, "$KD_Definition")?;
+    Ok(())
+}
+
+/// `$KD_Definition`: the format and the channels; whether the reference line is written
+/// by its points (a line given by points is; otherwise by its heading).
+fn write_definition(road: &Road, out: &mut impl Write, format: DataFormat) -> io::Result<bool> {
+    let (l, g) = (&road.line, &road.grid);
+    section(out, "$KD_Definition")?;
     writeln!(out, "#:{}", format.name())?;
-    // A line given by points is written as points; otherwise by its heading.
     let by_points = road.header.channels.contains(&crate::model::header::Channel::RefX);
     if by_points {
         writeln!(out, "D:reference line x,m")?;
         writeln!(out, "D:reference line y,m")?;
     }
-    if l.phi.is_some() {
-        writeln!(out, "D:reference line phi,rad")?;
-    }
-    if l.slope.is_some() {
-        writeln!(out, "D:reference line slope,m/m")?;
-    }
-    if l.bank.is_some() {
-        writeln!(out, "D:reference line banking,m/m")?;
+    for (channel, name) in [(&l.phi, "phi,rad"), (&l.slope, "slope,m/m"), (&l.bank, "banking,m/m")] {
+        if channel.is_some() {
+            writeln!(out, "D:reference line {name}")?;
+        }
     }
     for (i, v) in g.v.iter().enumerate() {
         match g.layout {
@@ -152,9 +159,15 @@ pub fn write_to(road: &Road, out: &mut impl Write, format: DataFormat) -> io::Re
             VLayout::Explicit => writeln!(out, "D:long section at v = {v:?},m")?,
         }
     }
-    writeln!(out, "$!**********************************************************************")?;
-    writeln!(out, "{}", "$".repeat(80))?;
+    section(out, &"$".repeat(80))?;
+    Ok(by_points)
+}
 
+/// The data: a record per cross section (the line's channels, then the heights), text or
+/// big-endian binary, a binary file padded with NaN to whole 80-byte records.
+fn write_data(road: &Road, out: &mut impl Write, format: DataFormat, by_points: bool) -> io::Result<()> {
+    let (l, g) = (&road.line, &road.grid);
+    let sections = g.sections_range();
     let width = format.field_width();
     let mut row: Vec<f64> = Vec::with_capacity(g.nv + 3);
     let mut text = String::new();
@@ -193,30 +206,28 @@ pub fn write_to(road: &Road, out: &mut impl Write, format: DataFormat) -> io::Re
                 fit(&mut text, *v, width);
             }
             text.push('\n');
-            out.write_all(text.as_bytes())?;
+            out.write_all(text.as_bytes())
         } else {
-            for v in &row {
-                if width == 4 {
-                    out.write_all(&(*v as f32).to_be_bytes())?;
-                } else {
-                    out.write_all(&v.to_be_bytes())?;
-                }
-                bytes_written += width;
-            }
+            bytes_written += row.len() * width;
+            row.iter().try_for_each(|&v| binary(out, v, width))
         }
-        Ok(())
     })?;
     if !format.is_text() {
         while !bytes_written.is_multiple_of(80) {
-            if width == 4 {
-                out.write_all(&f32::NAN.to_be_bytes())?;
-            } else {
-                out.write_all(&f64::NAN.to_be_bytes())?;
-            }
+            binary(out, f64::NAN, width)?;
             bytes_written += width;
         }
     }
     Ok(())
+}
+
+/// One value big-endian in `width` bytes (4: single precision, 8: double).
+fn binary(out: &mut impl Write, v: f64, width: usize) -> io::Result<()> {
+    if width == 4 {
+        out.write_all(&(v as f32).to_be_bytes())
+    } else {
+        out.write_all(&v.to_be_bytes())
+    }
 }
 
 /// Appends `v` in exactly `width` characters with as much precision as fits.
