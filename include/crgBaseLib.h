@@ -589,7 +589,8 @@ int crgContactPointDelete(int cpId);
 void crgContactPointDeleteAll(int dataSetId);
 
 /*
- Sets an integer option of a contact point.
+ Sets an integer option of a contact point. An integer that is not one of the
+ option's choices is kept, as the reference library keeps it, with a warning.
  */
 int crgContactPointOptionSetInt(int cpId, unsigned int optionId, int optionValue);
 

@@ -154,6 +154,15 @@ impl Instance {
         self.interface
     }
 
+    /// Refuses `call` in a state that does not allow it; `subject` names the variable a
+    /// get or set is of.
+    pub fn expect(&self, call: Call, subject: Option<&str>) -> Result<(), Refused> {
+        match call.refusal(self.state, subject) {
+            None => Ok(()),
+            Some(why) => Err(error(why)),
+        }
+    }
+
     /// Why the road the FMU names outside itself cannot be read, if it cannot.
     pub fn road_missing(&self) -> Option<&str> {
         self.fmu.missing()

@@ -15,6 +15,7 @@ mod fmi2;
 mod fmi3;
 mod guard;
 mod instance;
+mod lifecycle;
 mod log;
 mod states;
 mod uri;
