@@ -198,3 +198,25 @@ fn normal_png(
         &data,
     )
 }
+
+/// `opencrg export`: a mesh of the road (or a part), or its reference line as GeoJSON.
+pub(crate) fn run(
+    road: &Path,
+    output: &Path,
+    request: &Request,
+    options: &crate::EvalOptions,
+    budget: &Budget,
+) -> Result<(), String> {
+    let mut cp = crate::contact_point(road, options)?;
+    let is_geojson = output.extension().is_some_and(|e| e.eq_ignore_ascii_case("geojson"));
+    let done = if is_geojson {
+        if request.u.is_some() || request.v.is_some() || request.normal_map || request.max_error.is_some() {
+            return Err(format!("{}: a .geojson export takes no ranges, --normal-map or --max-error", road.display()));
+        }
+        crate::geojson::write(&mut cp, output)
+    } else {
+        export(&cp, output, request, budget)
+    };
+    eprintln!("{}", done.map_err(|e| format!("{}: {e}", road.display()))?);
+    Ok(())
+}

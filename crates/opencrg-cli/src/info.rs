@@ -98,3 +98,17 @@ pub fn facts(road: &Road, path: &str, scan: Option<&GridScan>) -> Json {
 pub fn text(road: &Road, path: &str, scan: Option<&GridScan>) -> String {
     opencrg_core::info::text_scanned(road, path, scan)
 }
+
+/// `opencrg info`: what the file holds, as text or JSON; `scan`: its heights scanned.
+pub(crate) fn run(road: &std::path::Path, json: bool, scan: bool) -> Result<(), crate::Failure> {
+    let r = crate::files::load(road)?;
+    let name = road.display().to_string();
+    let scan = scanned(&r, scan)?;
+    if json {
+        let facts = facts(&r, &name, scan.as_ref());
+        println!("{}", serde_json::to_string_pretty(&facts).map_err(|e| e.to_string())?);
+    } else {
+        print!("{}", text(&r, &name, scan.as_ref()));
+    }
+    Ok(())
+}

@@ -290,17 +290,7 @@ fn eval(cp: &mut ContactPoint, xy: bool) -> Result<(), Failure> {
     out.flush().map_err(io)
 }
 
-fn parse_profile(text: &str) -> Result<render::Section, Failure> {
-    let bad = || format!("--profile '{text}': expected u=NUMBER or v=NUMBER");
-    let (axis, value) = text.split_once('=').ok_or_else(bad)?;
-    let value: f64 = value.trim().parse().map_err(|_| bad())?;
-    match axis.trim() {
-        "u" => Ok(render::Section::AtU(value)),
-        "v" => Ok(render::Section::AtV(value)),
-        _ => Err(bad()),
-    }
-}
-
+/// Runs the command the line names.
 fn run(cli: Cli) -> Result<ExitCode, Failure> {
     let budget = match cli.max_memory {
         Some(bytes) => Budget::with_bytes(bytes),
@@ -308,132 +298,54 @@ fn run(cli: Cli) -> Result<ExitCode, Failure> {
     }
     .raised_with("--max-memory");
     match cli.command {
-        Command::Info { road, json, scan } => {
-            let r = load(&road)?;
-            let name = road.display().to_string();
-            let scan = info::scanned(&r, scan)?;
-            if json {
-                let facts = info::facts(&r, &name, scan.as_ref());
-                println!("{}", serde_json::to_string_pretty(&facts).map_err(|e| e.to_string())?);
-            } else {
-                print!("{}", info::text(&r, &name, scan.as_ref()));
-            }
-        }
-        Command::Check { road } => {
-            let mut r = load(&road)?;
-            for sentence in opencrg_core::map_disagreements(&r) {
-                eprintln!("opencrg: warning: {}: {sentence}", road.display());
-            }
-            return Ok(match r.check() {
-                Ok(()) => {
-                    println!("{}: passes the checks", road.display());
-                    ExitCode::SUCCESS
-                }
-                Err(e) => {
-                    eprintln!("{}: {e}", road.display());
-                    ExitCode::from(1)
-                }
-            });
-        }
+        Command::Info { road, json, scan } => info::run(&road, json, scan)?,
+        Command::Check { road } => return check(&road),
         Command::Convert { input, output, format } => {
-            let r = load(&input)?;
-            opencrg_core::write(&r, &output, format.into()).map_err(|e| e.to_string())?;
+            opencrg_core::write(&load(&input)?, &output, format.into()).map_err(|e| e.to_string())?
         }
-        Command::Eval { road, xy, options } => {
-            let mut cp = contact_point(&road, &options)?;
-            eval(&mut cp, xy)?;
-        }
+        Command::Eval { road, xy, options } => eval(&mut contact_point(&road, &options)?, xy)?,
         Command::Render { road, output, size, profile, options } => {
-            let section = profile.as_deref().map(parse_profile).transpose()?;
-            let mut cp = contact_point(&road, &options)?;
-            let ((u0, u1), (v0, v1)) = (cp.road().u_range(), cp.road().v_range());
-            let outside = match section {
-                Some(render::Section::AtU(u)) => (!(u0..=u1).contains(&u)).then_some(format!("u {u0} to {u1} m")),
-                Some(render::Section::AtV(v)) => (!(v0..=v1).contains(&v)).then_some(format!("v {v0} to {v1} m")),
-                None => None,
-            };
-            if let (Some(span), Some(text)) = (outside, &profile) {
-                return Err(format!("--profile {text}: outside the road, which spans {span}"));
-            }
-            if !(16..=render::MAX_SIZE).contains(&size) {
-                return Err(format!(
-                    "--size {size} px: the longer side of a picture takes 16 to {} px",
-                    render::MAX_SIZE
-                ));
-            }
-            let name = road.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-            let picture = match section {
-                Some(s) => render::profile(&mut cp, &name, s).map_err(|e| format!("{}: {e}", road.display()))?,
-                None => {
-                    let bar = indicatif::ProgressBar::new(0);
-                    bar.set_style(
-                        indicatif::ProgressStyle::with_template("rendering {bar:40} {pos}/{len} rows")
-                            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-                    );
-                    let picture = render::top_view(&mut cp, &name, size, &budget, &|row| {
-                        bar.set_length(bar.length().unwrap_or(0).max(row));
-                        bar.set_position(row);
-                    });
-                    bar.finish_and_clear();
-                    picture.map_err(|e| format!("{}: {e}", road.display()))?
-                }
-            };
-            picture.write(&output)?;
+            render::run(&road, &output, size, profile.as_deref(), &options, &budget)?
         }
         Command::Export { road, output, ranges, normal_map, max_error, options } => {
             let (u, v) = ranges.parse()?;
-            let mut cp = contact_point(&road, &options)?;
-            let is_geojson = output.extension().is_some_and(|e| e.eq_ignore_ascii_case("geojson"));
-            let done = if is_geojson {
-                if u.is_some() || v.is_some() || normal_map || max_error.is_some() {
-                    return Err(format!(
-                        "{}: a .geojson export takes no ranges, --normal-map or --max-error",
-                        road.display()
-                    ));
-                }
-                geojson::write(&mut cp, &output)
-            } else {
-                export::export(&cp, &output, &export::Request { u, v, normal_map, max_error }, &budget)
-            };
-            eprintln!("{}", done.map_err(|e| format!("{}: {e}", road.display()))?);
+            export::run(&road, &output, &export::Request { u, v, normal_map, max_error }, &options, &budget)?
         }
         Command::View { road, output, ranges, max_vertices, options } => {
-            let (u, v) = ranges.parse()?;
-            let cp = contact_point(&road, &options)?;
-            let name = road.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-            let shown = opencrg_tools::view::road_view(&cp, &name, u, v, max_vertices, &budget)
-                .map_err(|e| format!("{}: {e}", road.display()))?;
-            eprintln!("{}", view::write(&shown, &output)?);
+            view::run(&road, &output, ranges.parse()?, max_vertices, &options, &budget)?
         }
         Command::Roughness { road, tracks, segment, json, plot } => {
-            let mut r = load(&road)?;
-            if let Err(e) = r.check() {
-                eprintln!("opencrg: warning: {}: {e}", road.display());
-            }
-            r.apply_modifiers();
-            let tracks = if tracks.is_empty() { opencrg_tools::roughness::DEFAULT_TRACKS.to_vec() } else { tracks };
-            let found = opencrg_tools::roughness::roughness(&Arc::new(r), &tracks, segment)
-                .map_err(|e| format!("{}: {e}", road.display()))?;
-            for t in found.iter().filter(|t| t.skipped > 0.0) {
-                eprintln!("opencrg: warning: track at v = {} m: {:.2} m without elevation left out", t.v, t.skipped);
-            }
-            if json {
-                let text =
-                    serde_json::to_string_pretty(&roughness::json(&found, segment)).map_err(|e| e.to_string())?;
-                println!("{text}");
-            } else {
-                print!("{}", roughness::text(&found, &road.display().to_string(), segment));
-            }
-            if let Some(out) = plot {
-                let name = road.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-                roughness::plot(&found, &name, segment).and_then(|figure| figure.write(&out))?;
-            }
+            roughness::run(&road, tracks, segment, json, plot.as_deref())?
         }
         Command::Fmu(args) => fmu::run(args)?,
         Command::Make(command) => return make::run(command, &budget),
         Command::Odr(command) => return odr::run(command, &budget),
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// `opencrg check`: the map's disagreements as warnings, then the check; exit status 1
+/// where it fails.
+fn check(road: &Path) -> Result<ExitCode, Failure> {
+    let mut r = load(road)?;
+    for sentence in opencrg_core::map_disagreements(&r) {
+        eprintln!("opencrg: warning: {}: {sentence}", road.display());
+    }
+    Ok(match r.check() {
+        Ok(()) => {
+            println!("{}: passes the checks", road.display());
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("{}: {e}", road.display());
+            ExitCode::from(1)
+        }
+    })
+}
+
+/// A file's name, for titles.
+fn file_name(path: &Path) -> String {
+    path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default()
 }
 
 /// The command line, every value that looks like a negative number taken as one (so

@@ -435,6 +435,60 @@ pub fn profile(cp: &mut ContactPoint, name: &str, section: Section) -> Result<Fi
     })
 }
 
+fn parse_profile(text: &str) -> Result<Section, String> {
+    let bad = || format!("--profile '{text}': expected u=NUMBER or v=NUMBER");
+    let (axis, value) = text.split_once('=').ok_or_else(bad)?;
+    let value: f64 = value.trim().parse().map_err(|_| bad())?;
+    match axis.trim() {
+        "u" => Ok(Section::AtU(value)),
+        "v" => Ok(Section::AtV(value)),
+        _ => Err(bad()),
+    }
+}
+
+/// `opencrg render`: the top view (with a progress bar), or the section `profile` names.
+pub(crate) fn run(
+    road: &std::path::Path,
+    output: &std::path::Path,
+    size: usize,
+    profile: Option<&str>,
+    options: &crate::EvalOptions,
+    budget: &Budget,
+) -> Result<(), String> {
+    let section = profile.map(parse_profile).transpose()?;
+    let mut cp = crate::contact_point(road, options)?;
+    let ((u0, u1), (v0, v1)) = (cp.road().u_range(), cp.road().v_range());
+    let outside = match section {
+        Some(Section::AtU(u)) => (!(u0..=u1).contains(&u)).then_some(format!("u {u0} to {u1} m")),
+        Some(Section::AtV(v)) => (!(v0..=v1).contains(&v)).then_some(format!("v {v0} to {v1} m")),
+        None => None,
+    };
+    if let (Some(span), Some(text)) = (outside, profile) {
+        return Err(format!("--profile {text}: outside the road, which spans {span}"));
+    }
+    if !(16..=MAX_SIZE).contains(&size) {
+        return Err(format!("--size {size} px: the longer side of a picture takes 16 to {MAX_SIZE} px"));
+    }
+    let name = crate::file_name(road);
+    let picture = match section {
+        Some(s) => self::profile(&mut cp, &name, s).map_err(|e| format!("{}: {e}", road.display()))?,
+        None => {
+            let bar = indicatif::ProgressBar::new(0);
+            bar.set_style(
+                indicatif::ProgressStyle::with_template("rendering {bar:40} {pos}/{len} rows")
+                    .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+            );
+            let picture = top_view(&mut cp, &name, size, budget, &|row| {
+                bar.set_length(bar.length().unwrap_or(0).max(row));
+                bar.set_position(row);
+            });
+            bar.finish_and_clear();
+            picture.map_err(|e| format!("{}: {e}", road.display()))?
+        }
+    };
+    picture.write(output)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

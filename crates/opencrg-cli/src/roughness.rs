@@ -224,3 +224,34 @@ pub fn plot(tracks: &[Track], name: &str, segment: f64) -> Result<Figure, String
         Ok(())
     })
 }
+
+/// `opencrg roughness`: the road's wheel tracks (`tracks`, or the default three) as text
+/// or JSON, and a figure where `plot` names one.
+pub(crate) fn run(
+    road: &std::path::Path,
+    tracks: Vec<f64>,
+    segment: f64,
+    json: bool,
+    plot: Option<&std::path::Path>,
+) -> Result<(), String> {
+    let mut r = crate::files::load(road)?;
+    if let Err(e) = r.check() {
+        eprintln!("opencrg: warning: {}: {e}", road.display());
+    }
+    r.apply_modifiers();
+    let tracks = if tracks.is_empty() { opencrg_tools::roughness::DEFAULT_TRACKS.to_vec() } else { tracks };
+    let found = opencrg_tools::roughness::roughness(&std::sync::Arc::new(r), &tracks, segment)
+        .map_err(|e| format!("{}: {e}", road.display()))?;
+    for t in found.iter().filter(|t| t.skipped > 0.0) {
+        eprintln!("opencrg: warning: track at v = {} m: {:.2} m without elevation left out", t.v, t.skipped);
+    }
+    if json {
+        println!("{}", serde_json::to_string_pretty(&self::json(&found, segment)).map_err(|e| e.to_string())?);
+    } else {
+        print!("{}", text(&found, &road.display().to_string(), segment));
+    }
+    if let Some(out) = plot {
+        self::plot(&found, &crate::file_name(road), segment).and_then(|figure| figure.write(out))?;
+    }
+    Ok(())
+}
