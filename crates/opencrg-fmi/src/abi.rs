@@ -6,6 +6,7 @@
 use crate::guard::{guarded, text};
 use crate::instance::{error, Instance, Interface, Refused};
 use crate::log::{Logger, Status};
+use opencrg_fmu::variables::Type;
 use opencrg_fmu::Fmi;
 use std::ffi::{c_char, c_void};
 use std::path::PathBuf;
@@ -52,6 +53,20 @@ pub(crate) unsafe fn free(c: *mut c_void) {
 pub(crate) fn integers<T>(i: &mut Instance, vrs: &[u32], out: &mut [T], to: impl Fn(i32) -> T) -> Result<(), Refused> {
     for (&vr, value) in vrs.iter().zip(out) {
         *value = to(i.integer(vr)?);
+    }
+    Ok(())
+}
+
+/// Integer variables of FMI 3's type for `ty` into `out`, each converted by `to`.
+pub(crate) fn integers_of<T>(
+    i: &mut Instance,
+    vrs: &[u32],
+    out: &mut [T],
+    ty: Type,
+    to: impl Fn(i32) -> T,
+) -> Result<(), Refused> {
+    for (&vr, value) in vrs.iter().zip(out) {
+        *value = to(i.integer_of(vr, ty)?);
     }
     Ok(())
 }

@@ -9,6 +9,7 @@ use crate::abi;
 use crate::guard::{guarded, on_instance, same_length, slice, slice_mut, text, this_export};
 use crate::instance::{error, Interface, Refused};
 use crate::log::{Fmi3Logger, Logger, Status};
+use opencrg_fmu::variables::Type;
 use opencrg_fmu::Fmi;
 use std::ffi::{c_char, c_int, c_void};
 
@@ -262,7 +263,8 @@ pub unsafe extern "C" fn fmi3GetInt32(c: Inst, vr: *const Vr, nvr: usize, values
     unsafe {
         on_instance(this_export!(), c, |i| {
             same_length(nvr, n_values)?;
-            abi::integers(i, slice(vr, nvr, "valueReferences")?, slice_mut(values, nvr, "values")?, |v| v)
+            let (vr, values) = (slice(vr, nvr, "valueReferences")?, slice_mut(values, nvr, "values")?);
+            abi::integers_of(i, vr, values, Type::Integer, |v| v)
         })
     }
 }
@@ -325,9 +327,9 @@ pub unsafe extern "C" fn fmi3SetBoolean(
 ) -> Status {
     // SAFETY: the caller's promise.
     unsafe {
-        on_instance(this_export!(), c, |i| {
+        on_instance(this_export!(), c, |_| {
             same_length(nvr, n_values)?;
-            abi::set_booleans(i, slice(vr, nvr, "valueReferences")?)
+            no_variable_of("settable Int64", slice(vr, nvr, "valueReferences")?)
         })
     }
 }
@@ -425,8 +427,45 @@ no_such_type!(fmi3GetUInt8, fmi3SetUInt8, u8, "UInt8");
 no_such_type!(fmi3GetInt16, fmi3SetInt16, i16, "Int16");
 no_such_type!(fmi3GetUInt16, fmi3SetUInt16, u16, "UInt16");
 no_such_type!(fmi3GetUInt32, fmi3SetUInt32, u32, "UInt32");
-no_such_type!(fmi3GetInt64, fmi3SetInt64, i64, "Int64");
 no_such_type!(fmi3GetUInt64, fmi3SetUInt64, u64, "UInt64");
+
+/// Reads Int64 variables: a map's road, an enumeration.
+///
+/// # Safety
+/// `c` is null or a live instance of this library; `vr` holds `nvr` values, `values`
+/// `n_values`.
+#[no_mangle]
+pub unsafe extern "C" fn fmi3GetInt64(c: Inst, vr: *const Vr, nvr: usize, values: *mut i64, n_values: usize) -> Status {
+    // SAFETY: the caller's promise.
+    unsafe {
+        on_instance(this_export!(), c, |i| {
+            same_length(nvr, n_values)?;
+            let (vr, values) = (slice(vr, nvr, "valueReferences")?, slice_mut(values, nvr, "values")?);
+            abi::integers_of(i, vr, values, Type::Enumeration, i64::from)
+        })
+    }
+}
+
+/// Sets Int64 variables: there is none to set.
+///
+/// # Safety
+/// `c` is null or a live instance of this library; `vr` holds `nvr` values.
+#[no_mangle]
+pub unsafe extern "C" fn fmi3SetInt64(
+    c: Inst,
+    vr: *const Vr,
+    nvr: usize,
+    _values: *const i64,
+    n_values: usize,
+) -> Status {
+    // SAFETY: the caller's promise.
+    unsafe {
+        on_instance(this_export!(), c, |_| {
+            same_length(nvr, n_values)?;
+            no_variable_of("settable Int64", slice(vr, nvr, "valueReferences")?)
+        })
+    }
+}
 
 /// Reads Binary variables: there are none.
 ///

@@ -328,7 +328,7 @@ impl Instance {
                 // Model exchange's continuous-time mode: as of the last event.
                 Quantity::Road if self.state == State::ContinuousTime => return Ok(self.wheels.latched(i).1),
                 Quantity::Lane if self.state == State::ContinuousTime => return Ok(self.wheels.latched(i).2),
-                _ if q.ty() == Type::Integer => return Ok(self.wheels.integer(i, q)),
+                _ if matches!(q.ty(), Type::Integer | Type::Enumeration) => return Ok(self.wheels.integer(i, q)),
                 _ => {}
             }
             return Err(self.not_a(vr, "Integer"));
@@ -340,6 +340,19 @@ impl Instance {
             },
             _ => Err(self.not_a(vr, "Integer")),
         }
+    }
+
+    /// An integer variable of FMI 3's type for `ty` (Int32 for an Integer, Int64 for an
+    /// Enumeration); refused for a variable of another type.
+    pub fn integer_of(&mut self, vr: u32, ty: Type) -> Result<i32, Refused> {
+        let is = match variables::wheel_of(self.kind, self.wheel_count, vr) {
+            Some((_, q)) => q.ty(),
+            None => Parameter::from_vr(self.kind, vr).map_or(Type::Real, |p| p.ty()),
+        };
+        if is != ty {
+            return Err(self.not_a(vr, if ty == Type::Integer { "Int32" } else { "Int64 (Enumeration)" }));
+        }
+        self.integer(vr)
     }
 
     /// Sets an Integer variable.

@@ -38,6 +38,37 @@ pub struct Meta {
     pub description: String,
     /// The program that wrote it.
     pub generation_tool: String,
+    /// A map's roads' OpenDRIVE ids in the file's order: the items of the enumeration
+    /// `wheel[i].road` is (none for a CRG file).
+    pub roads: Vec<String>,
+}
+
+/// The enumeration type of `wheel[i].road`.
+const ROAD_TYPE: &str = "Road";
+
+/// The item of `wheel[i].road` off every road (value -1), named so unless a road has
+/// that id.
+fn off_road_item(roads: &[String]) -> &'static str {
+    ["off road", "(off road)", "-"].into_iter().find(|name| !roads.iter().any(|id| id == name)).unwrap_or("")
+}
+
+/// The type definitions: the enumeration of a map's roads, by their ids.
+fn type_definitions(x: &mut String, fmi: Fmi, roads: &[String]) {
+    let items = std::iter::once((-1, off_road_item(roads)))
+        .chain(roads.iter().enumerate().map(|(k, id)| (k as i64, id.as_str())))
+        .map(|(value, name)| format!("      <Item name=\"{}\" value=\"{value}\"/>", escape(name)))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let _ = match fmi {
+        Fmi::V2 => writeln!(
+            x,
+            "  <TypeDefinitions>\n    <SimpleType name=\"{ROAD_TYPE}\">\n    <Enumeration>\n{items}\n    </Enumeration>\n    </SimpleType>\n  </TypeDefinitions>"
+        ),
+        Fmi::V3 => writeln!(
+            x,
+            "  <TypeDefinitions>\n    <EnumerationType name=\"{ROAD_TYPE}\">\n{items}\n    </EnumerationType>\n  </TypeDefinitions>"
+        ),
+    };
 }
 
 /// Turns a file name into a model identifier: letters, digits and `_`, not starting
@@ -163,6 +194,9 @@ pub fn model_description(fmi: Fmi, kind: Kind, meta: &Meta, variables: &[Variabl
         let _ = writeln!(x, "    <Unit name=\"{}\"><BaseUnit {base}/></Unit>", escape(name));
     }
     let _ = writeln!(x, "  </UnitDefinitions>");
+    if variables.iter().any(|v| v.ty == Type::Enumeration) {
+        type_definitions(&mut x, fmi, &meta.roads);
+    }
     let _ = writeln!(x, "  <LogCategories>");
     let _ = writeln!(
         x,
@@ -247,10 +281,14 @@ fn variable_2(x: &mut String, v: &Variable) {
     let element = match v.ty {
         Type::Real => "Real",
         Type::Integer => "Integer",
+        Type::Enumeration => "Enumeration",
         Type::Boolean => "Boolean",
         Type::String => "String",
     };
     let mut inner = String::new();
+    if v.ty == Type::Enumeration {
+        inner.push_str(&format!(" declaredType=\"{ROAD_TYPE}\""));
+    }
     match &v.start {
         Some(Start::Real(r)) => inner.push_str(&format!(" start=\"{}\"", number(*r))),
         Some(Start::Integer(i)) => inner.push_str(&format!(" start=\"{i}\"")),
@@ -268,10 +306,14 @@ fn variable_3(x: &mut String, v: &Variable) {
     let element = match v.ty {
         Type::Real => "Float64",
         Type::Integer => "Int32",
+        Type::Enumeration => "Enumeration",
         Type::Boolean => "Boolean",
         Type::String => "String",
     };
     let mut a = attributes(v);
+    if v.ty == Type::Enumeration {
+        a.push_str(&format!(" declaredType=\"{ROAD_TYPE}\""));
+    }
     let mut body = None;
     match &v.start {
         Some(Start::Real(r)) => a.push_str(&format!(" start=\"{}\"", number(*r))),
@@ -304,6 +346,19 @@ mod tests {
         assert_eq!(identifier_of("3lanes"), "road_3lanes");
         assert_eq!(identifier_of(""), "road_");
         assert_eq!(identifier_of("Straße"), "Stra_e");
+    }
+
+    #[test]
+    fn roads_are_items_named_by_their_ids() {
+        let roads = vec!["1".to_string(), "off road".to_string(), "a<b".to_string()];
+        for fmi in [Fmi::V2, Fmi::V3] {
+            let mut x = String::new();
+            type_definitions(&mut x, fmi, &roads);
+            for item in ["name=\"(off road)\" value=\"-1\"", "name=\"1\" value=\"0\"", "name=\"a&lt;b\" value=\"2\""] {
+                assert!(x.contains(item), "{item} in {x}");
+            }
+        }
+        assert_eq!(off_road_item(&[]), "off road");
     }
 
     #[test]

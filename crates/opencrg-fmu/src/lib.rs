@@ -124,6 +124,15 @@ impl Fmu {
         }
     }
 
+    /// A map's roads' OpenDRIVE ids in the file's order (none for a CRG file): what
+    /// `wheel[i].road`'s values name.
+    pub fn road_ids(&self) -> Vec<String> {
+        match &self.ground {
+            Ground::Map(surface) => surface.map().roads.iter().map(|r| r.id.clone()).collect(),
+            Ground::Crg(_) => Vec::new(),
+        }
+    }
+
     /// The model's variables (FMI 3's time first when `with_time`).
     pub fn variables(&self, with_time: bool) -> Vec<Variable> {
         let start = self.road_file_start();

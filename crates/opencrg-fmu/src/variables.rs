@@ -24,6 +24,9 @@ pub enum Type {
     Real,
     /// A 32-bit integer.
     Integer,
+    /// An integer naming one of a list of items (FMI 2 reads it as an Integer, FMI 3 as
+    /// an Int64): a map's road, each item named by its OpenDRIVE id.
+    Enumeration,
     /// A Boolean.
     Boolean,
     /// A string.
@@ -148,7 +151,7 @@ const QUANTITIES: [QuantityInfo; 17] = [
     q(Quantity::OnRoad, "onRoad", Type::Boolean, None, None, "whether the wheel is on the road (off it the other outputs hold their documented values)"),
     q(Quantity::S, "s", Type::Real, M, Some(Kind::Map), "s along the road under the wheel"),
     q(Quantity::T, "t", Type::Real, M, Some(Kind::Map), "t across the road under the wheel"),
-    q(Quantity::Road, "road", Type::Integer, None, Some(Kind::Map), "the road under the wheel: its index in the map file's order, from 0 (-1 off every road)"),
+    q(Quantity::Road, "road", Type::Enumeration, None, Some(Kind::Map), "the road under the wheel: its index in the map file's order, from 0, an item named by the road's OpenDRIVE id (-1 off every road)"),
     q(Quantity::Lane, "lane", Type::Integer, None, Some(Kind::Map), "the OpenDRIVE lane id under the wheel (0 off every road)"),
     q(Quantity::U, "u", Type::Real, M, Some(Kind::Crg), "u along the CRG reference line under the wheel"),
     q(Quantity::V, "v", Type::Real, M, Some(Kind::Crg), "v across the CRG reference line under the wheel"),

@@ -265,6 +265,11 @@ def test_map_answers_as_odr_eval_and_the_c_api(work, mode, fmi):
     bare = map_with(work, mode + "_bare", "")
     fmu = pack(path, work / f"{mode}{fmi}.fmu", fmi)
     assert validate_fmu(str(fmu)) == []
+    # wheel[i].road is an enumeration whose items are named by the roads' OpenDRIVE ids.
+    md = fmpy.read_model_description(str(fmu))
+    road_type = next(t for t in md.typeDefinitions if t.name == "Road")
+    item = {int(i.value): i.name for i in road_type.items}
+    assert item[-1] == "off road" and item[0] == "1", item
     table = wheel_path(lambda s, t: road_points(path, 0, [s], [t])[0])
     quantities = ["x", "y", "z", "friction", "s", "t", "road", "lane", "onRoad", "nx", "ny", "nz"]
     outputs = [f"wheel[{i}].{q}" for i in range(1, WHEELS + 1) for q in quantities]
@@ -284,6 +289,7 @@ def test_map_answers_as_odr_eval_and_the_c_api(work, mode, fmi):
                     assert same(float(row[f"wheel[{i}].{q}"]), float(value)), (mode, fmi_type, i, q, x, y)
                 z, mu, road, s, t = odr[(x, y)].split()
                 assert road == "1" or not want["onRoad"], road
+                assert item[int(row[f"wheel[{i}].road"])] == (road if want["onRoad"] else "off road")
                 for q, text in (("z", z), ("s", s), ("t", t)):
                     assert float(row[f"wheel[{i}].{q}"]) == float(text), (mode, q, text)
                 if mu != "nan":

@@ -389,6 +389,7 @@ pub fn write_fmu(road: &Path, out: &Path, options: &FmuOptions) -> Result<FmuRep
         token: config.token.clone(),
         description,
         generation_tool: format!("opencrg {version}"),
+        roads: fmu.road_ids(),
     };
     let xml = model_description(options.fmi, kind, &meta, &variables);
 
