@@ -210,7 +210,10 @@ rm -rf target/python-sdist-venv
 python3 -m venv target/python-sdist-venv
 target/python-sdist-venv/bin/pip install -q --upgrade pip
 target/python-sdist-venv/bin/pip install -q numpy pytest
-target/python-sdist-venv/bin/pip install -q --config-settings=build-args="--profile=dev" target/sdist/opencrg-*.tar.gz
+# (Built where the workspace's development builds are, so the registry crates built for
+# them are not built again.)
+CARGO_TARGET_DIR="$PWD/target" target/python-sdist-venv/bin/pip install -q --config-settings=build-args="--profile=dev" \
+    target/sdist/opencrg-*.tar.gz
 # (A package built from source carries no FMU binary: write_fmu takes the archive's.)
 OPENCRG_CLI="$PWD/target/release/opencrg" OPENCRG_FMU_BINARIES="$PWD/target/dist/opencrg-$version-linux-x86_64/lib/opencrg/fmu" \
     target/python-sdist-venv/bin/python -m pytest -q -p no:logging crates/opencrg-python/tests/test_opencrg.py \
