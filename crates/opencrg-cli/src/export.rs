@@ -204,10 +204,10 @@ pub(crate) fn run(
     road: &Path,
     output: &Path,
     request: &Request,
-    options: &crate::EvalOptions,
+    options: &crate::eval_options::EvalOptions,
     budget: &Budget,
 ) -> Result<(), String> {
-    let mut cp = crate::contact_point(road, options)?;
+    let mut cp = crate::eval_options::contact_point(road, options)?;
     let is_geojson = output.extension().is_some_and(|e| e.eq_ignore_ascii_case("geojson"));
     let done = if is_geojson {
         if request.u.is_some() || request.v.is_some() || request.normal_map || request.max_error.is_some() {

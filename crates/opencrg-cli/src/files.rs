@@ -66,6 +66,11 @@ impl From<Format> for DataFormat {
     }
 }
 
+/// A file's name, for titles.
+pub(crate) fn file_name(path: &Path) -> String {
+    path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default()
+}
+
 /// A number as the point commands print it: the shortest text that reads back as the same
 /// number, plainly where that is short (1e-5 to 1e16), in powers of ten otherwise (`1e300`,
 /// not 301 digits); `nan` for NaN.

@@ -100,7 +100,7 @@ pub fn text(road: &Road, path: &str, scan: Option<&GridScan>) -> String {
 }
 
 /// `opencrg info`: what the file holds, as text or JSON; `scan`: its heights scanned.
-pub(crate) fn run(road: &std::path::Path, json: bool, scan: bool) -> Result<(), crate::Failure> {
+pub(crate) fn run(road: &std::path::Path, json: bool, scan: bool) -> Result<(), crate::files::Failure> {
     let r = crate::files::load(road)?;
     let name = road.display().to_string();
     let scan = scanned(&r, scan)?;

@@ -26,6 +26,7 @@
 //! Bad input gives one line on stderr and exit status 2; a road that fails its checks
 //! gives exit status 1 from `check`.
 
+mod eval_options;
 mod export;
 mod expr;
 mod files;
@@ -39,15 +40,13 @@ mod render;
 mod roughness;
 mod view;
 
-use clap::{Parser, Subcommand, ValueEnum};
+use clap::{Parser, Subcommand};
+use eval_options::{contact_point, EvalOptions};
 use files::{load, stdin_pairs, Failure, Format};
-use opencrg_core::settings;
-
-use opencrg_core::{Budget, ContactPoint, Continuation, CpOption};
+use opencrg_core::{Budget, ContactPoint};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use std::sync::Arc;
 
 #[derive(Parser)]
 #[command(
@@ -174,92 +173,6 @@ enum Command {
     Odr(odr::OdrCommand),
 }
 
-#[derive(Clone, Copy, ValueEnum)]
-enum BorderMode {
-    None,
-    Zero,
-    Keep,
-    Repeat,
-    Reflect,
-}
-
-#[derive(Clone, Copy, ValueEnum)]
-enum CurvMode {
-    Lateral,
-    Refline,
-}
-
-/// Evaluation options, as the contact point options of the C API.
-#[derive(clap::Args)]
-struct EvalOptions {
-    /// Border mode beyond the ends of the road.
-    #[arg(long, value_enum)]
-    border_mode_u: Option<BorderMode>,
-    /// Border mode beyond the sides of the road.
-    #[arg(long, value_enum)]
-    border_mode_v: Option<BorderMode>,
-    /// z offset beyond the ends.
-    #[arg(long)]
-    border_offset_u: Option<f64>,
-    /// z offset beyond the sides.
-    #[arg(long)]
-    border_offset_v: Option<f64>,
-    /// Length of the smoothing zone at the start [m].
-    #[arg(long)]
-    smooth_begin: Option<f64>,
-    /// Length of the smoothing zone at the end [m].
-    #[arg(long)]
-    smooth_end: Option<f64>,
-    /// Curvature of the reference line, or of the parallel at v (lateral, the default).
-    #[arg(long, value_enum)]
-    curv_mode: Option<CurvMode>,
-    /// Continue a closed reference line around the track.
-    #[arg(long)]
-    close_track: bool,
-    /// Evaluate the road as read, without crgCheck and the file's modifiers.
-    #[arg(long)]
-    raw: bool,
-}
-
-/// The road prepared as the classic C API prepares it (check, modifiers), and a
-/// contact point with the options asked for.
-fn contact_point(path: &Path, o: &EvalOptions) -> Result<ContactPoint, Failure> {
-    let mut road = load(path)?;
-    if !o.raw {
-        if let Err(e) = road.check() {
-            eprintln!("opencrg: warning: {}: {e}", path.display());
-        }
-        road.apply_modifiers();
-    }
-    let mut cp = ContactPoint::new(Arc::new(road));
-    let mode = |m: BorderMode| match m {
-        BorderMode::None => settings::BorderMode::None,
-        BorderMode::Zero => settings::BorderMode::ExZero,
-        BorderMode::Keep => settings::BorderMode::ExKeep,
-        BorderMode::Repeat => settings::BorderMode::Repeat,
-        BorderMode::Reflect => settings::BorderMode::Reflect,
-    };
-    let options = [
-        o.border_mode_u.map(|m| CpOption::BorderModeU(mode(m))),
-        o.border_mode_v.map(|m| CpOption::BorderModeV(mode(m))),
-        o.border_offset_u.map(CpOption::BorderOffsetU),
-        o.border_offset_v.map(CpOption::BorderOffsetV),
-        o.smooth_begin.map(CpOption::SmoothUBegin),
-        o.smooth_end.map(CpOption::SmoothUEnd),
-        o.curv_mode.map(|c| {
-            CpOption::CurvMode(match c {
-                CurvMode::Lateral => opencrg_core::CurvMode::Lateral,
-                CurvMode::Refline => opencrg_core::CurvMode::RefLine,
-            })
-        }),
-        o.close_track.then_some(CpOption::RefLineContinue(Continuation::CloseTrack)),
-    ];
-    for option in options.into_iter().flatten() {
-        cp.set_option(option).map_err(|e| e.to_string())?;
-    }
-    Ok(cp)
-}
-
 fn number(v: Option<f64>) -> String {
     files::number(v.unwrap_or(f64::NAN))
 }
@@ -341,11 +254,6 @@ fn check(road: &Path) -> Result<ExitCode, Failure> {
             ExitCode::from(1)
         }
     })
-}
-
-/// A file's name, for titles.
-fn file_name(path: &Path) -> String {
-    path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default()
 }
 
 /// The command line, every value that looks like a negative number taken as one (so

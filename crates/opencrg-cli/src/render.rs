@@ -452,11 +452,11 @@ pub(crate) fn run(
     output: &std::path::Path,
     size: usize,
     profile: Option<&str>,
-    options: &crate::EvalOptions,
+    options: &crate::eval_options::EvalOptions,
     budget: &Budget,
 ) -> Result<(), String> {
     let section = profile.map(parse_profile).transpose()?;
-    let mut cp = crate::contact_point(road, options)?;
+    let mut cp = crate::eval_options::contact_point(road, options)?;
     let ((u0, u1), (v0, v1)) = (cp.road().u_range(), cp.road().v_range());
     let outside = match section {
         Some(Section::AtU(u)) => (!(u0..=u1).contains(&u)).then_some(format!("u {u0} to {u1} m")),
@@ -469,7 +469,7 @@ pub(crate) fn run(
     if !(16..=MAX_SIZE).contains(&size) {
         return Err(format!("--size {size} px: the longer side of a picture takes 16 to {MAX_SIZE} px"));
     }
-    let name = crate::file_name(road);
+    let name = crate::files::file_name(road);
     let picture = match section {
         Some(s) => self::profile(&mut cp, &name, s).map_err(|e| format!("{}: {e}", road.display()))?,
         None => {

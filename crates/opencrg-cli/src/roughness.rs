@@ -251,7 +251,7 @@ pub(crate) fn run(
         print!("{}", text(&found, &road.display().to_string(), segment));
     }
     if let Some(out) = plot {
-        self::plot(&found, &crate::file_name(road), segment).and_then(|figure| figure.write(out))?;
+        self::plot(&found, &crate::files::file_name(road), segment).and_then(|figure| figure.write(out))?;
     }
     Ok(())
 }

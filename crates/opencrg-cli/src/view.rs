@@ -17,11 +17,11 @@ pub(crate) fn run(
     output: &Path,
     (u, v): (crate::export::Range, crate::export::Range),
     max_vertices: usize,
-    options: &crate::EvalOptions,
+    options: &crate::eval_options::EvalOptions,
     budget: &opencrg_core::Budget,
 ) -> Result<(), String> {
-    let cp = crate::contact_point(road, options)?;
-    let shown = opencrg_tools::view::road_view(&cp, &crate::file_name(road), u, v, max_vertices, budget)
+    let cp = crate::eval_options::contact_point(road, options)?;
+    let shown = opencrg_tools::view::road_view(&cp, &crate::files::file_name(road), u, v, max_vertices, budget)
         .map_err(|e| format!("{}: {e}", road.display()))?;
     eprintln!("{}", write(&shown, output)?);
     Ok(())
