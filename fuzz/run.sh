@@ -21,7 +21,8 @@ export RUSTFLAGS="--cfg fuzzing -Cpasses=sancov-module -Cllvm-args=-sanitizer-co
 bin=target/fuzz/$host/release
 corpus=target/fuzz/corpus
 mkdir -p "$corpus" target/fuzz/findings
-(unset RUSTFLAGS; cargo run -q --release -p opencrg-tools --example make_fuzz_seeds -- "$corpus")
+# (The seeds' maker in the development profile: the test run has built its crates so.)
+(unset RUSTFLAGS; cargo run -q -p opencrg-tools --example make_fuzz_seeds -- "$corpus")
 cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
 echo "fuzzing ${seconds} s per target on $cpu"
 for t in "${targets[@]}"; do
