@@ -28,10 +28,6 @@ cd "$(dirname "$0")"
     { echo "test.sh: needs ../shared beside the checkout (the project's test data)" >&2; exit 1; }
 # Each group's time, for the test run's budget (40 minutes on 2 cores, .ci/run included).
 step() { echo "test.sh: $SECONDS s: $1"; }
-# Release builds made only to test on other platforms (and the wheel's) leave out
-# link-time optimisation to fit the run's time: the same code and answers, a minute less
-# each; what is published is built by the same scripts with the release profile's.
-no_lto=(env CARGO_PROFILE_RELEASE_LTO=off CARGO_PROFILE_RELEASE_CODEGEN_UNITS=16)
 cargo fmt --all --check
 cargo clippy --workspace --all-targets -- -D warnings
 RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps
@@ -88,10 +84,9 @@ c-tests/instructions/run.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"
 ctest --test-dir build --output-on-failure -j"$(nproc)"
-# (The other platforms' builds without link-time optimisation, as above.)
-"${no_lto[@]}" c-tests/cross/run.sh windows
-"${no_lto[@]}" c-tests/cross/run.sh arm
-"${no_lto[@]}" c-tests/cross/run.sh linux
+c-tests/cross/run.sh windows
+c-tests/cross/run.sh arm
+c-tests/cross/run.sh linux
 step "FMU"
 # The FMUs as users drive them: FMPy (from PyPI) validates and simulates FMUs of a CRG
 # file and of shared maps with CRG records in every mode, FMI 2 and 3, co-simulation and
@@ -190,7 +185,7 @@ rm -rf "$fmu_binaries"
 mkdir -p "$fmu_binaries/x86_64-linux"
 cp "target/dist/opencrg-$version-linux-x86_64/lib/opencrg/fmu/x86_64-linux/libopencrg_fmi.so" "$fmu_binaries/x86_64-linux/"
 # (maturin finds zig through the `python` first on PATH: the build environment's.)
-"${no_lto[@]}" PATH="$PWD/target/python-build/bin:$PATH" maturin build -q --release --zig -m crates/opencrg-python/Cargo.toml --out target/wheels
+env PATH="$PWD/target/python-build/bin:$PATH" maturin build -q --release --zig -m crates/opencrg-python/Cargo.toml --out target/wheels
 rm -rf "$fmu_binaries"
 wheel=$(ls target/wheels/opencrg-*-cp39-abi3-*manylinux_2_17_x86_64*.whl)
 # Installed into a fresh environment where cargo cannot be found, and tested there.
