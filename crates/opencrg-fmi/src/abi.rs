@@ -49,24 +49,21 @@ pub(crate) unsafe fn free(c: *mut c_void) {
     }
 }
 
-/// Integer variables into `out`, each converted by `to`.
-pub(crate) fn integers<T>(i: &mut Instance, vrs: &[u32], out: &mut [T], to: impl Fn(i32) -> T) -> Result<(), Refused> {
-    for (&vr, value) in vrs.iter().zip(out) {
-        *value = to(i.integer(vr)?);
-    }
-    Ok(())
-}
-
-/// Integer variables of FMI 3's type for `ty` into `out`, each converted by `to`.
-pub(crate) fn integers_of<T>(
+/// Integer variables into `out`, each converted by `to`: of FMI 3's type `ty` (Int32
+/// for an Integer, Int64 for an Enumeration), or of either (`None`: FMI 2 reads both as
+/// Integer).
+pub(crate) fn integers<T>(
     i: &mut Instance,
     vrs: &[u32],
     out: &mut [T],
-    ty: Type,
+    ty: Option<Type>,
     to: impl Fn(i32) -> T,
 ) -> Result<(), Refused> {
     for (&vr, value) in vrs.iter().zip(out) {
-        *value = to(i.integer_of(vr, ty)?);
+        *value = to(match ty {
+            Some(ty) => i.integer_of(vr, ty)?,
+            None => i.integer(vr)?,
+        });
     }
     Ok(())
 }

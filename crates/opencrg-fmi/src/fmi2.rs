@@ -200,7 +200,7 @@ pub unsafe extern "C" fn fmi2GetInteger(c: Component, vr: *const Vr, nvr: usize,
     // SAFETY: the caller's promise.
     unsafe {
         on_instance(this_export!(), c, |i| {
-            abi::integers(i, slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?, |v| v)
+            abi::integers(i, slice(vr, nvr, "vr")?, slice_mut(value, nvr, "value")?, None, |v| v)
         })
     }
 }

@@ -264,7 +264,7 @@ pub unsafe extern "C" fn fmi3GetInt32(c: Inst, vr: *const Vr, nvr: usize, values
         on_instance(this_export!(), c, |i| {
             same_length(nvr, n_values)?;
             let (vr, values) = (slice(vr, nvr, "valueReferences")?, slice_mut(values, nvr, "values")?);
-            abi::integers_of(i, vr, values, Type::Integer, |v| v)
+            abi::integers(i, vr, values, Some(Type::Integer), |v| v)
         })
     }
 }
@@ -327,9 +327,9 @@ pub unsafe extern "C" fn fmi3SetBoolean(
 ) -> Status {
     // SAFETY: the caller's promise.
     unsafe {
-        on_instance(this_export!(), c, |_| {
+        on_instance(this_export!(), c, |i| {
             same_length(nvr, n_values)?;
-            no_variable_of("settable Int64", slice(vr, nvr, "valueReferences")?)
+            abi::set_booleans(i, slice(vr, nvr, "valueReferences")?)
         })
     }
 }
@@ -441,7 +441,7 @@ pub unsafe extern "C" fn fmi3GetInt64(c: Inst, vr: *const Vr, nvr: usize, values
         on_instance(this_export!(), c, |i| {
             same_length(nvr, n_values)?;
             let (vr, values) = (slice(vr, nvr, "valueReferences")?, slice_mut(values, nvr, "values")?);
-            abi::integers_of(i, vr, values, Type::Enumeration, i64::from)
+            abi::integers(i, vr, values, Some(Type::Enumeration), i64::from)
         })
     }
 }
@@ -451,20 +451,9 @@ pub unsafe extern "C" fn fmi3GetInt64(c: Inst, vr: *const Vr, nvr: usize, values
 /// # Safety
 /// `c` is null or a live instance of this library; `vr` holds `nvr` values.
 #[no_mangle]
-pub unsafe extern "C" fn fmi3SetInt64(
-    c: Inst,
-    vr: *const Vr,
-    nvr: usize,
-    _values: *const i64,
-    n_values: usize,
-) -> Status {
+pub unsafe extern "C" fn fmi3SetInt64(c: Inst, vr: *const Vr, nvr: usize, _values: *const i64, _n: usize) -> Status {
     // SAFETY: the caller's promise.
-    unsafe {
-        on_instance(this_export!(), c, |_| {
-            same_length(nvr, n_values)?;
-            no_variable_of("settable Int64", slice(vr, nvr, "valueReferences")?)
-        })
-    }
+    unsafe { on_instance(this_export!(), c, |_| no_variable_of("settable Int64", slice(vr, nvr, "valueReferences")?)) }
 }
 
 /// Reads Binary variables: there are none.

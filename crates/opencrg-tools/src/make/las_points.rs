@@ -2,8 +2,6 @@
 //! without it such files are refused, saying so).
 
 use super::generate::Points;
-use opencrg_core::Result;
-use std::path::Path;
 
 #[cfg(feature = "point-clouds")]
 mod read {
@@ -16,12 +14,14 @@ mod read {
         move |e| bad(path, 0, "LAS", e.to_string())
     }
 
+    /// The points of a LAS or LAZ file.
     pub(crate) fn file(path: &Path) -> Result<Points> {
         let reader = las::Reader::from_path(path).map_err(las_error(path))?;
         let size = std::fs::metadata(path).map_or(0, |m| m.len());
         read_las(reader, path, size)
     }
 
+    /// The points of LAS or LAZ `bytes`, read as a file called `name`.
     pub(crate) fn bytes(bytes: &[u8], name: &Path) -> Result<Points> {
         let reader = las::Reader::new(std::io::Cursor::new(bytes.to_vec())).map_err(las_error(name))?;
         read_las(reader, name, bytes.len() as u64)
@@ -73,12 +73,4 @@ mod read {
     }
 }
 
-/// The points of a LAS or LAZ file.
-pub(crate) fn read_file(path: &Path) -> Result<Points> {
-    read::file(path)
-}
-
-/// The points of LAS or LAZ `bytes`, read as a file called `name`.
-pub(crate) fn read_bytes(bytes: &[u8], name: &Path) -> Result<Points> {
-    read::bytes(bytes, name)
-}
+pub(crate) use read::{bytes as read_bytes, file as read_file};
