@@ -26,11 +26,14 @@
 mod base {
     pub mod budget;
     pub(crate) mod compat;
+    pub(crate) mod double_double;
     pub(crate) mod error;
     pub(crate) mod fault_guard;
     pub(crate) mod mapped_file;
+    pub mod math;
     pub(crate) mod memory;
     pub(crate) mod pair;
+    pub mod portable_math;
     pub(crate) mod setting_values;
     pub mod settings;
     pub mod units;
@@ -84,7 +87,7 @@ pub use base::compat::{Compat, UnknownCompat};
 pub use base::error::{Error, Location, Result};
 pub use base::setting_values::{Continuation, CpOption, CurvMode, Modifier};
 pub use base::settings::{Settings, Value};
-pub use base::{budget, settings, units};
+pub use base::{budget, math, settings, units};
 pub use geo::earth::Earth;
 pub use geo::map_check::map_disagreements;
 pub use model::header::{Channel, DataFormat};

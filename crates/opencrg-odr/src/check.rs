@@ -3,6 +3,7 @@
 
 use crate::crg::Source;
 use crate::map::{CrgMode, CrgOrientation, CrgPurpose, CrgRecord, Map, Road};
+use opencrg_core::math;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 
@@ -104,7 +105,7 @@ fn road_findings(road: &Road, out: &mut Vec<Finding>) {
     }
     for pair in road.plan.windows(2) {
         let end = pair[0].pose(pair[0].length);
-        let gap = (end.x - pair[1].x).hypot(end.y - pair[1].y);
+        let gap = math::hypot(end.x - pair[1].x, end.y - pair[1].y);
         if gap > GAP {
             find(format!("the reference line jumps {gap:.3} m at s = {}", pair[1].s));
         }

@@ -5,6 +5,7 @@
 
 use crate::map::{CrgMode, CrgOrientation, CrgRecord, Map, Road};
 use opencrg_core::draft::Draft;
+use opencrg_core::math;
 use opencrg_core::{ContactPoint, Error, Location, Result};
 use std::collections::BTreeMap;
 use std::path::PathBuf;
@@ -178,17 +179,17 @@ impl Layer {
             CrgMode::Attached0 => Lay::Along { s0, t0, sign, grid: false, base: 0.0 },
             CrgMode::Genuine => {
                 let at = road.reference(record.s_offset);
-                let (sin, cos) = at.hdg.sin_cos();
+                let (sin, cos) = math::sin_cos(at.hdg);
                 let line = files.files[file].whole.reference_line();
                 Lay::Placed {
                     origin: (at.x - record.t_offset * sin, at.y + record.t_offset * cos),
-                    sin_cos: (at.hdg + record.h_offset - line.phi_first).sin_cos(),
+                    sin_cos: math::sin_cos(at.hdg + record.h_offset - line.phi_first),
                     first: (line.x_first, line.y_first),
                 }
             }
             CrgMode::Global => Lay::Placed {
                 origin: (record.x_offset, record.y_offset),
-                sin_cos: record.h_offset.sin_cos(),
+                sin_cos: math::sin_cos(record.h_offset),
                 first: (0.0, 0.0),
             },
         };

@@ -4,6 +4,7 @@
 
 use crate::quadrature::{integrate, integrate_pair, points_for_turn};
 use crate::trig;
+use opencrg_core::math;
 
 /// The shape of one record.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -177,7 +178,7 @@ impl Geometry {
     /// and cosine of the record's start heading.
     fn placed(&self, ds: f64) -> (Pose, f64, (f64, f64)) {
         let (local_x, local_y, turn, curvature, param) = self.local(ds);
-        let (sin, cos) = self.hdg.sin_cos();
+        let (sin, cos) = math::sin_cos(self.hdg);
         let pose = Pose {
             x: self.x + cos * local_x - sin * local_y,
             y: self.y + sin * local_x + cos * local_y,
@@ -202,8 +203,9 @@ impl Geometry {
             Shape::Arc { curvature: k } => {
                 // The chord 2 sin(k ds / 2) / k, at half the turn: exact as k goes to 0.
                 let half = 0.5 * k * ds;
-                let chord = if k == 0.0 { ds } else { 2.0 * half.sin() / k };
-                (chord * half.cos(), chord * half.sin(), k * ds, k, 0.0)
+                let (sin, cos) = math::sin_cos(half);
+                let chord = if k == 0.0 { ds } else { 2.0 * sin / k };
+                (chord * cos, chord * sin, k * ds, k, 0.0)
             }
             Shape::Spiral { start, end } => {
                 let rate = if self.length > 0.0 { (end - start) / self.length } else { 0.0 };
@@ -211,8 +213,8 @@ impl Geometry {
                 let turn_rate = start.abs().max((start + rate * ds).abs());
                 let (x, y) = integrate_pair(
                     |t| {
-                        let a = angle(t);
-                        (a.cos(), a.sin())
+                        let (sin, cos) = math::sin_cos(angle(t));
+                        (cos, sin)
                     },
                     0.0,
                     ds,
@@ -225,7 +227,7 @@ impl Geometry {
                 let (guess, range) = self.parameter_scale(ds);
                 let p = self.parameter_for(ds, guess, range);
                 let c = self.curve_point(p);
-                (c.u, c.v, c.dv.atan2(c.du), c.curvature, p)
+                (c.u, c.v, math::atan2(c.dv, c.du), c.curvature, p)
             }
         }
     }
@@ -282,10 +284,10 @@ impl Geometry {
                 let pose = Pose {
                     x: self.x + cf * c.u - sf * c.v,
                     y: self.y + sf * c.u + cf * c.v,
-                    hdg: self.hdg + c.dv.atan2(c.du),
+                    hdg: self.hdg + math::atan2(c.dv, c.du),
                     curvature: c.curvature,
                 };
-                let n = c.du.hypot(c.dv);
+                let n = math::hypot(c.du, c.dv);
                 let (tu, tv) = (c.du / n, c.dv / n);
                 (pose, sf * tu + cf * tv, cf * tu - sf * tv, p, near)
             }
@@ -301,7 +303,7 @@ impl Geometry {
         match self.shape {
             Shape::ParamPoly3 { u, v, normalized } => {
                 let end = if normalized { 1.0 } else { self.length };
-                integrate(|p| cubic_slope(&u, p).hypot(cubic_slope(&v, p)), 0.0, end, 16, 16)
+                integrate(|p| math::hypot(cubic_slope(&u, p), cubic_slope(&v, p)), 0.0, end, 16, 16)
             }
             _ => self.length,
         }
@@ -319,7 +321,7 @@ impl Geometry {
     /// A cubic curve's speed |d(u, v)/dp| at parameter p.
     fn speed(&self, p: f64) -> f64 {
         let (a, b) = self.tangent(p);
-        a.hypot(b)
+        math::hypot(a, b)
     }
 
     /// A cubic curve's point at parameter p.
@@ -327,12 +329,13 @@ impl Geometry {
         match self.shape {
             Shape::Poly3 { coefficients: c } => {
                 let slope = cubic_slope(&c, p);
-                let curvature = cubic_bend(&c, p) / (1.0 + slope * slope).powf(1.5);
+                let curvature = cubic_bend(&c, p) / math::pow_three_halves(1.0 + slope * slope);
                 CurvePoint { u: p, v: cubic(&c, p), du: 1.0, dv: slope, curvature }
             }
             Shape::ParamPoly3 { u, v, .. } => {
                 let (du, dv) = (cubic_slope(&u, p), cubic_slope(&v, p));
-                let curvature = (du * cubic_bend(&v, p) - dv * cubic_bend(&u, p)) / (du * du + dv * dv).powf(1.5);
+                let curvature =
+                    (du * cubic_bend(&v, p) - dv * cubic_bend(&u, p)) / math::pow_three_halves(du * du + dv * dv);
                 CurvePoint { u: cubic(&u, p), v: cubic(&v, p), du, dv, curvature }
             }
             _ => CurvePoint { u: p, v: 0.0, du: 1.0, dv: 0.0, curvature: 0.0 },

@@ -6,6 +6,7 @@
 use crate::geometry::{turned_path, Shape, Station, CLOSED_TURN};
 use crate::map::{Map, Road};
 use crate::trig;
+use opencrg_core::math;
 use rstar::{RTree, RTreeObject, AABB};
 
 /// Where a world point lies on the map.
@@ -80,7 +81,7 @@ impl RoadIndex {
                 // nearby, not from the curve's start); the window's end is the record's
                 // own (where the next record starts, its station may lie elsewhere).
                 let Some(g) = road.geometry_at(0.5 * (w[0] + w[1])) else { continue };
-                let frame = g.hdg.sin_cos();
+                let frame = math::sin_cos(g.hdg);
                 let cubic = matches!(g.shape, Shape::Poly3 { .. } | Shape::ParamPoly3 { .. });
                 let (mut anchor, mut station) = (None, Station::default());
                 let mut sample = |j: usize| {

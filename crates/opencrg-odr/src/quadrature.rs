@@ -4,6 +4,7 @@
 //! they leave errors far below rounding. Over short stretches where the integrand turns
 //! little, fewer points do the same ([`points_for_turn`]).
 
+use opencrg_core::math;
 use std::sync::OnceLock;
 
 /// A rule: nodes on -1..1 and their weights (the first `n` entries).
@@ -15,7 +16,7 @@ fn make(n: usize) -> Rule {
     let (mut nodes, mut weights) = ([0.0; 16], [0.0; 16]);
     let order = n as f64;
     for i in 0..n {
-        let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (order + 0.5)).cos();
+        let mut x = math::cos(std::f64::consts::PI * (i as f64 + 0.75) / (order + 0.5));
         let mut derivative = 1.0;
         for _ in 0..100 {
             let (mut p0, mut p1) = (1.0, x);

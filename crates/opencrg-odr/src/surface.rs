@@ -11,6 +11,7 @@
 use crate::geometry::{Geometry, Pose};
 use crate::lanes::LaneSpan;
 use crate::map::Road;
+use opencrg_core::math;
 
 /// A point of a road's reference line.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -32,15 +33,15 @@ pub struct RefPoint {
 impl RefPoint {
     /// The unit vector along t.
     pub fn e_t(&self) -> [f64; 3] {
-        let (sh, ch) = self.hdg.sin_cos();
-        let (sr, cr) = self.roll.sin_cos();
+        let (sh, ch) = math::sin_cos(self.hdg);
+        let (sr, cr) = math::sin_cos(self.roll);
         [-cr * sh, cr * ch, sr]
     }
 
     /// The unit vector of heights above the cross section.
     pub fn e_h(&self) -> [f64; 3] {
-        let (sh, ch) = self.hdg.sin_cos();
-        let (sr, cr) = self.roll.sin_cos();
+        let (sh, ch) = math::sin_cos(self.hdg);
+        let (sr, cr) = math::sin_cos(self.roll);
         [sr * sh, -sr * ch, cr]
     }
 

@@ -4,6 +4,8 @@
 //! the last place of the library's answer up to [`SMALL`], measured by the tests); the
 //! turns within [`TINY`] need its first terms only.
 
+use opencrg_core::math;
+
 /// The largest angle (rad) [`small_sin_cos`] takes.
 pub(crate) const SMALL: f64 = 0.1;
 
@@ -39,7 +41,7 @@ pub(crate) fn sin_cos(a: f64) -> (f64, f64) {
     if a.abs() <= SMALL {
         small_sin_cos(a)
     } else {
-        a.sin_cos()
+        math::sin_cos(a)
     }
 }
 

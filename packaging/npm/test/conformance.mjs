@@ -1,19 +1,25 @@
 // The conformance suite's client (../shared/conformance/oracle.c) in JavaScript, on the
 // npm package: the same questions, printed the same way, for compare.py.
 //   node conformance.mjs PACKAGE CONFORMANCE OUT [current|2.0.1]
-import { readFileSync, readdirSync, writeFileSync, mkdirSync } from 'node:fs';
-import { join } from 'node:path';
+import { existsSync, readFileSync, readdirSync, writeFileSync, mkdirSync } from 'node:fs';
+import { join, relative, sep } from 'node:path';
 import { pathToFileURL } from 'node:url';
 
 const [pkg, suite, out, profile = 'current'] = process.argv.slice(2);
 const { Road, ContactPoint } = await import(pathToFileURL(join(pkg, 'index.js')).href);
 mkdirSync(out, { recursive: true });
 
-// Every sample file, by its path under the suite (a CRG file's references are found
-// beside it among these, as the C client finds them from the file's folder).
+// Every sample file, by its path under the suite, in subfolders too (a CRG file's
+// references are found beside it among these, as the C client finds them from the
+// file's folder).
 const files = {};
 for (const dir of ['crg-txt', 'crg-bin']) {
-  for (const name of readdirSync(join(suite, dir))) files[`${dir}/${name}`] = readFileSync(join(suite, dir, name));
+  if (!existsSync(join(suite, dir))) continue;
+  for (const entry of readdirSync(join(suite, dir), { recursive: true, withFileTypes: true })) {
+    if (!entry.isFile()) continue;
+    const path = join(entry.parentPath ?? entry.path, entry.name);
+    files[relative(suite, path).split(sep).join('/')] = readFileSync(path);
+  }
 }
 
 const pr = (d) => (Number.isNaN(d) ? ' nan' : ` ${d}`);

@@ -11,6 +11,7 @@
 //! - `HS7`: the linearised rotation with `1 + ds` on its diagonal (no separate scale); the
 //!   inverse applies the same formula with every parameter negated.
 
+use crate::base::math;
 use crate::model::georef::{Datum, DatumKind};
 
 type Matrix = [[f64; 3]; 3];
@@ -63,9 +64,9 @@ fn linear(r: [f64; 3], diagonal: f64) -> Matrix {
 
 /// The exact rotation `Rx(rx) Ry(ry) Rz(rz)`, before transposition.
 fn exact(r: [f64; 3]) -> Matrix {
-    let (s1, c1) = r[0].sin_cos();
-    let (s2, c2) = r[1].sin_cos();
-    let (s3, c3) = r[2].sin_cos();
+    let (s1, c1) = math::sin_cos(r[0]);
+    let (s2, c2) = math::sin_cos(r[1]);
+    let (s3, c3) = math::sin_cos(r[2]);
     let rx = [[1.0, 0.0, 0.0], [0.0, c1, -s1], [0.0, s1, c1]];
     let ry = [[c2, 0.0, s2], [0.0, 1.0, 0.0], [-s2, 0.0, c2]];
     let rz = [[c3, -s3, 0.0], [s3, c3, 0.0], [0.0, 0.0, 1.0]];

@@ -4,6 +4,8 @@
 //! ellipsoids and projection zones are resolved here; the projection arithmetic lives
 //! in `geo`.
 
+use crate::base::math;
+
 /// The global origin: how the road's local x/y/z frame sits in the projected
 /// east/north/height frame. A local point is turned about the reference line's first
 /// point by `phi`, then shifted by (`x`, `y`, `z`).
@@ -23,7 +25,7 @@ impl GlobalOrigin {
     /// East, north and height of the local point `p`, for a road whose reference line
     /// starts at `first` (local x, y).
     pub fn to_global(&self, first: (f64, f64), p: [f64; 3]) -> [f64; 3] {
-        let (s, c) = self.phi.sin_cos();
+        let (s, c) = math::sin_cos(self.phi);
         let (dx, dy) = (p[0] - first.0, p[1] - first.1);
         [first.0 + dx * c - dy * s + self.x, first.1 + dx * s + dy * c + self.y, p[2] + self.z]
     }
@@ -31,7 +33,7 @@ impl GlobalOrigin {
     /// The local point whose east, north and height are `q` (the inverse of
     /// [`GlobalOrigin::to_global`]).
     pub fn to_local(&self, first: (f64, f64), q: [f64; 3]) -> [f64; 3] {
-        let (s, c) = self.phi.sin_cos();
+        let (s, c) = math::sin_cos(self.phi);
         let (dx, dy) = (q[0] - self.x - first.0, q[1] - self.y - first.1);
         [first.0 + dx * c + dy * s, first.1 - dx * s + dy * c, q[2] - self.z]
     }
@@ -40,7 +42,7 @@ impl GlobalOrigin {
     /// of `first` (the origin turns the road about its first point): every local point
     /// keeps its east, north and height.
     pub(crate) fn for_start(&self, first: (f64, f64), new_first: (f64, f64)) -> GlobalOrigin {
-        let (s, c) = self.phi.sin_cos();
+        let (s, c) = math::sin_cos(self.phi);
         let (dx, dy) = (first.0 - new_first.0, first.1 - new_first.1);
         GlobalOrigin { x: self.x + dx - (dx * c - dy * s), y: self.y + dy - (dx * s + dy * c), ..*self }
     }
@@ -54,7 +56,7 @@ impl GlobalOrigin {
             x: self.x + first.0 - moved_first.0,
             y: self.y + first.1 - moved_first.1,
             z: self.z - dz,
-            phi: p.sin().atan2(p.cos()),
+            phi: math::atan2(math::sin(p), math::cos(p)),
         }
     }
 }
@@ -284,7 +286,7 @@ mod tests {
         // Move the road: turn by 0.5 about (2, 1), shift by (3, -7, 2).
         let (angle, c, t) = (0.5f64, (2.0, 1.0), (3.0, -7.0, 2.0));
         let mv = |x: f64, y: f64| {
-            let (s, co) = angle.sin_cos();
+            let (s, co) = math::sin_cos(angle);
             let (dx, dy) = (x - c.0, y - c.1);
             (c.0 + dx * co - dy * s + t.0, c.1 + dx * s + dy * co + t.1)
         };

@@ -2,6 +2,7 @@
 //! straight line), z integrated from the slope, banking, and closed-track data.
 
 use crate::base::compat::Compat;
+use crate::base::math;
 
 /// Which optional end values the header defined.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -199,7 +200,7 @@ impl RefLine {
         let inc = self.u_inc;
         let both_ends = self.defined.x_end && self.defined.y_end;
         let Some(phi) = &self.phi else {
-            let (c, s) = (self.phi_first.cos(), self.phi_first.sin());
+            let (s, c) = math::sin_cos(self.phi_first);
             for i in 0..n {
                 self.x[i] = self.x_first + i as f64 * inc * c;
                 self.y[i] = self.y_first + i as f64 * inc * s;
@@ -220,11 +221,11 @@ impl RefLine {
             self.x[n - 1] = self.x_last;
             self.y[n - 1] = self.y_last;
             for i in (1..n).rev() {
-                self.x[i - 1] = self.x[i] - inc * phi[i].cos();
-                self.y[i - 1] = self.y[i] - inc * phi[i].sin();
+                self.x[i - 1] = self.x[i] - inc * math::cos(phi[i]);
+                self.y[i - 1] = self.y[i] - inc * math::sin(phi[i]);
             }
             let gap = (self.x_first - self.x[0], self.y_first - self.y[0]);
-            if gap.0.hypot(gap.1) > 1e-6 * (self.u_last - self.u_first) {
+            if math::hypot(gap.0, gap.1) > 1e-6 * (self.u_last - self.u_first) {
                 findings.push(LineFinding::HeadingMissesStart { gap });
             }
             if from_start {
@@ -233,8 +234,8 @@ impl RefLine {
             }
             for i in 0..n - 1 {
                 let f = (i + 1) as f64 / (n - 1) as f64;
-                self.x[i + 1] = (1.0 - f) * (self.x[i] + inc * phi[i + 1].cos()) + f * self.x[i + 1];
-                self.y[i + 1] = (1.0 - f) * (self.y[i] + inc * phi[i + 1].sin()) + f * self.y[i + 1];
+                self.x[i + 1] = (1.0 - f) * (self.x[i] + inc * math::cos(phi[i + 1])) + f * self.x[i + 1];
+                self.y[i + 1] = (1.0 - f) * (self.y[i] + inc * math::sin(phi[i + 1])) + f * self.y[i + 1];
             }
         } else {
             if from_start {
@@ -242,8 +243,8 @@ impl RefLine {
                 self.y[0] = self.y_first;
             }
             for i in 0..n - 1 {
-                self.x[i + 1] = self.x[i] + inc * phi[i + 1].cos();
-                self.y[i + 1] = self.y[i] + inc * phi[i + 1].sin();
+                self.x[i + 1] = self.x[i] + inc * math::cos(phi[i + 1]);
+                self.y[i + 1] = self.y[i] + inc * math::sin(phi[i + 1]);
             }
             self.x_last = self.x[n - 1];
             self.y_last = self.y[n - 1];
@@ -324,10 +325,10 @@ impl RefLine {
 
     pub(crate) fn update_trig(&mut self) {
         self.trig = Trig {
-            first_sin: self.phi_first.sin(),
-            first_cos: self.phi_first.cos(),
-            last_sin: self.phi_last.sin(),
-            last_cos: self.phi_last.cos(),
+            first_sin: math::sin(self.phi_first),
+            first_cos: math::cos(self.phi_first),
+            last_sin: math::sin(self.phi_last),
+            last_cos: math::cos(self.phi_last),
         };
     }
 
@@ -397,7 +398,7 @@ impl RefLine {
     /// The factor of [`RefLine::curvature_at`] for points `k` apart (the same for every
     /// cross section: computed once for all of them).
     pub(crate) fn curvature_scale(&self, k: usize) -> f64 {
-        1.0 / (self.u_inc * k as f64).powf(3.0)
+        1.0 / math::cube(self.u_inc * k as f64)
     }
 
     /// Curvature at cross section `i` from the points `i - k`, `i`, `i + k`, with the

@@ -2,6 +2,7 @@
 //! preparing a road, and the events of loading, checking and applying modifiers, for
 //! a front end (the C API prints them as messages) to pass on.
 
+use crate::base::math;
 use crate::model::grid::Grid;
 use crate::model::refline::{LineFinding, RefLine};
 use std::path::PathBuf;
@@ -120,7 +121,7 @@ impl Statistics {
             None => (f64::NAN, f64::NAN),
         };
         let n = l.n;
-        let heading = |a: usize, b: usize| (l.y[b] - l.y[a]).atan2(l.x[b] - l.x[a]);
+        let heading = |a: usize, b: usize| math::atan2(l.y[b] - l.y[a], l.x[b] - l.x[a]);
         let (mut right, mut left) = (0.0f64, 0.0f64);
         let hd = l.curvature_scale(1);
         for i in 1..n - 1 {

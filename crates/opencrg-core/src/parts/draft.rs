@@ -3,6 +3,7 @@
 //! assembly a file's data takes. The road tools (`opencrg-tools`) each change a draft.
 
 use crate::base::error::Result;
+use crate::base::math;
 use crate::model::georef::GlobalOrigin;
 use crate::model::grid::{bank_v, Grid, GridPart, InPlace, Store, VLayout};
 use crate::model::header::{Channel, EndsGiven, Header, RoadParams};
@@ -56,7 +57,7 @@ pub struct Draft {
 pub fn headings_through(points: &[(f64, f64)]) -> Vec<f64> {
     let mut phi = vec![0.0; points.len()];
     for j in 1..points.len() {
-        let p = (points[j].1 - points[j - 1].1).atan2(points[j].0 - points[j - 1].0);
+        let p = math::atan2(points[j].1 - points[j - 1].1, points[j].0 - points[j - 1].0);
         phi[j] = if j == 1 { p } else { p - ((p - phi[j - 1]) / TAU).round() * TAU };
     }
     phi[0] = phi.get(1).copied().unwrap_or(0.0);
@@ -148,8 +149,8 @@ impl Draft {
         let n = self.nu();
         let (mut x, mut y) = (vec![self.start.0; n], vec![self.start.1; n]);
         for i in 1..n {
-            x[i] = x[i - 1] + self.u_inc * self.phi[i].cos();
-            y[i] = y[i - 1] + self.u_inc * self.phi[i].sin();
+            x[i] = x[i - 1] + self.u_inc * math::cos(self.phi[i]);
+            y[i] = y[i - 1] + self.u_inc * math::sin(self.phi[i]);
         }
         (x, y)
     }

@@ -1,6 +1,7 @@
 //! Applying modifiers: scaling, NaN handling of the grid borders, and relocation of
 //! the road by reference point or by offset and rotation.
 
+use crate::base::math;
 use crate::base::settings::{m, NanMode, Settings};
 use crate::model::grid::VLayout;
 use crate::model::road::Road;
@@ -213,8 +214,8 @@ fn scale_values(values: &mut Option<Vec<f64>>, factor: f64) {
 fn rotate(x: &mut f64, y: &mut f64, center: (f64, f64), angle: f64) {
     let dx = *x - center.0;
     let dy = *y - center.1;
-    let a = dy.atan2(dx) + angle;
+    let a = math::atan2(dy, dx) + angle;
     let r = (dx * dx + dy * dy).sqrt();
-    *x = center.0 + r * a.cos();
-    *y = center.1 + r * a.sin();
+    *x = center.0 + r * math::cos(a);
+    *y = center.1 + r * math::sin(a);
 }

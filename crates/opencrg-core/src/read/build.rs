@@ -2,6 +2,7 @@
 //! header, the records of the data section, the reference line from its channels.
 
 use crate::base::error::{Error, Location, Result};
+use crate::base::math;
 use crate::model::grid::{Grid, GridValues, InPlace, Store, VLayout};
 use crate::model::header::{Channel, Header, RoadParams};
 use crate::model::in_place::Records;
@@ -576,7 +577,7 @@ impl RefLine {
         let u_last;
         if cols.x.is_some() {
             let (min, max, total) =
-                spacing(b.x.windows(2).zip(b.y.windows(2)).map(|(x, y)| (x[1] - x[0]).hypot(y[1] - y[0])));
+                spacing(b.x.windows(2).zip(b.y.windows(2)).map(|(x, y)| math::hypot(x[1] - x[0], y[1] - y[0])));
             if !(min >= 1e-6) {
                 return Err("reference line x/y points are closer than 1e-6 m".into());
             }
