@@ -126,8 +126,8 @@ done
 # (docs/testing.md); more fail.
 rm -rf target/generated-suite
 for profile in current 2.0.1; do
-    golden=golden allowed=11
-    [ $profile = current ] || golden=golden-$profile allowed=17
+    golden=golden allowed=8
+    [ $profile = current ] || golden=golden-$profile allowed=12
     CONFORMANCE_PROFILE=$profile c-tests/generated/make_suite.sh target/generated-suite target/release/libopencrg.so
     node packaging/npm/test/conformance.mjs target/wasm-dist/package target/generated-suite target/wasm-generated-$profile $profile
     echo "npm package, generated roads ($profile profile): $(python3 ../shared/conformance/compare.py \

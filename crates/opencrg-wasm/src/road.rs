@@ -6,7 +6,7 @@ use crate::evaluate::call;
 use crate::settings;
 use js_sys::{Array, Float32Array, Object, Reflect, Uint8Array};
 use opencrg_core::settings::Family;
-use opencrg_core::{Compat, ContactPoint};
+use opencrg_core::{Compat, ContactPoint, Settings};
 use std::sync::Arc;
 use wasm_bindgen::prelude::*;
 
@@ -20,7 +20,10 @@ impl Road {
     /// A contact point with the road's options and `options` on top.
     pub(crate) fn contact_point(&self, options: &JsValue) -> Result<ContactPoint, Thrown> {
         let mut cp = ContactPoint::new(self.road.clone());
-        let mut table = cp.options().clone();
+        // Only the options given go through the setter, as a C program sets them after
+        // `crgContactPointCreate`: the file's own take effect as there (setting a search
+        // distance again would also move the history's reach).
+        let mut table = Settings::empty_options();
         settings::each(options, |name, value| settings::set(&mut table, Family::Option, name, value))?;
         for (id, value) in table.iter() {
             cp.set_option_value(id, value).map_err(crate::errors::error)?;
