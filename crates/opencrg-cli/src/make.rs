@@ -309,78 +309,100 @@ pub fn run(command: MakeCommand, budget: &Budget) -> Result<std::process::ExitCo
         MakeCommand::Slope(a) => channel(a, LineChannel::Slope)?,
         MakeCommand::Banking(a) => channel(a, LineChannel::Banking)?,
         MakeCommand::Generate { output, refline, grid, width, surface, format } => {
-            let line = tools::read_points(&refline).map_err(|e| e.to_string())?;
-            let layout = Layout { width, u_inc: grid.u_inc, v_inc: grid.v_inc };
-            let made = match surface.as_deref() {
-                None => tools::generate(&line, layout, None, budget),
-                Some(text) if Path::new(text).is_file() => {
-                    let other = ContactPoint::new(Arc::new(load(Path::new(text))?));
-                    let f = move |u: f64, v: f64| other.uv_to_z(u, v).unwrap_or(f64::NAN);
-                    tools::generate(&line, layout, Some(&f), budget)
-                }
-                Some(text) => {
-                    let e = expr::parse(text).map_err(|m| format!("--surface '{}': {m}", expr::abridged(text)))?;
-                    tools::generate(&line, layout, Some(&|u, v| e.at(u, v)), budget)
-                }
-            }
-            .map_err(named(&refline))?;
-            save(&made, &output, data_format(format.format, DataFormat::Kdbi))?;
+            generate(&output, &refline, &grid, width, surface.as_deref(), &format, budget)?
         }
         MakeCommand::Import { cloud, output, refline, width, grid, max_edge, fill_nan, crop, format } => {
             let crop = crop.as_deref().map(parse_crop).transpose()?;
-            let bar = progress_bar();
-            bar.set_message("reading");
-            let points = tools::read_points(&cloud).map_err(|e| e.to_string())?;
             let refline = refline.map(|l| tools::read_points(&l).map_err(|e| e.to_string())).transpose()?;
             let how = Import { refline, width, u_inc: grid.u_inc, v_inc: grid.v_inc, max_edge, fill: fill_nan, crop };
-            let started = std::time::Instant::now();
-            let made = tools::import(
-                &points,
-                &how,
-                &|stage, done, total| {
-                    bar.set_message(stage.to_string());
-                    bar.set_length(total);
-                    bar.set_position(done);
-                },
-                budget,
-            );
-            bar.finish_and_clear();
-            let made = made.map_err(named(&cloud))?;
-            let seconds = started.elapsed().as_secs_f64();
-            eprintln!(
-                "gridded {} points in {seconds:.2} s ({:.0} points/s)",
-                points.len(),
-                points.len() as f64 / seconds
-            );
-            save(&made, &output, data_format(format.format, DataFormat::Kdbi))?;
+            import(&cloud, &output, &how, &format, budget)?
         }
-        MakeCommand::Compare { a, b, tolerance, json } => {
-            let (ra, rb) = (Arc::new(load(&a)?), Arc::new(load(&b)?));
-            let c = tools::compare(&ra, &rb, &|_, _, _| {}).map_err(named(&a))?;
-            if json {
-                let value = serde_json::json!({
-                    "compared": c.compared,
-                    "only_in_a": c.only_first,
-                    "max_difference": c.max_difference,
-                    "signed": c.signed,
-                    "at": { "u": c.at[0], "v": c.at[1], "x": c.at[2], "y": c.at[3] },
-                    "rms": c.rms,
-                });
-                println!("{}", serde_json::to_string_pretty(&value).map_err(|e| e.to_string())?);
-            } else {
-                println!(
-                    "largest difference {:.6} m (B - A = {:.6} m) at u = {:.3}, v = {:.3} (x = {:.3}, y = {:.3})\n\
-                     rms {:.6} m over {} nodes of A; {} nodes of A have no surface of B at their x/y",
-                    c.max_difference, c.signed, c.at[0], c.at[1], c.at[2], c.at[3], c.rms, c.compared, c.only_first
-                );
-            }
-            if c.compared == 0 {
-                return Err(format!("{} and {}: no grid node of A lies on B", a.display(), b.display()));
-            }
-            if tolerance.is_some_and(|t| c.max_difference > t) {
-                return Ok(std::process::ExitCode::from(1));
-            }
+        MakeCommand::Compare { a, b, tolerance, json } => return compare(&a, &b, tolerance, json),
+    }
+    Ok(std::process::ExitCode::SUCCESS)
+}
+
+/// `make generate`: a road along a reference line, flat or with a surface (a road file's
+/// or a formula's).
+fn generate(
+    output: &Path,
+    refline: &Path,
+    grid: &GridArgs,
+    width: f64,
+    surface: Option<&str>,
+    format: &OutputFormat,
+    budget: &Budget,
+) -> Result<(), String> {
+    let line = tools::read_points(refline).map_err(|e| e.to_string())?;
+    let layout = Layout { width, u_inc: grid.u_inc, v_inc: grid.v_inc };
+    let made = match surface {
+        None => tools::generate(&line, layout, None, budget),
+        Some(text) if Path::new(text).is_file() => {
+            let other = ContactPoint::new(Arc::new(load(Path::new(text))?));
+            let f = move |u: f64, v: f64| other.uv_to_z(u, v).unwrap_or(f64::NAN);
+            tools::generate(&line, layout, Some(&f), budget)
         }
+        Some(text) => {
+            let e = expr::parse(text).map_err(|m| format!("--surface '{}': {m}", expr::abridged(text)))?;
+            tools::generate(&line, layout, Some(&|u, v| e.at(u, v)), budget)
+        }
+    }
+    .map_err(named(refline))?;
+    save(&made, output, data_format(format.format, DataFormat::Kdbi))?;
+    Ok(())
+}
+
+/// `make import`: a road gridded from a point cloud, with a progress bar.
+fn import(cloud: &Path, output: &Path, how: &Import, format: &OutputFormat, budget: &Budget) -> Result<(), String> {
+    let bar = progress_bar();
+    bar.set_message("reading");
+    let points = tools::read_points(cloud).map_err(|e| e.to_string())?;
+    let started = std::time::Instant::now();
+    let made = tools::import(
+        &points,
+        how,
+        &|stage, done, total| {
+            bar.set_message(stage.to_string());
+            bar.set_length(total);
+            bar.set_position(done);
+        },
+        budget,
+    );
+    bar.finish_and_clear();
+    let made = made.map_err(named(cloud))?;
+    let seconds = started.elapsed().as_secs_f64();
+    eprintln!("gridded {} points in {seconds:.2} s ({:.0} points/s)", points.len(), points.len() as f64 / seconds);
+    save(&made, output, data_format(format.format, DataFormat::Kdbi))?;
+    Ok(())
+}
+
+/// `make compare`: the largest and the rms difference of two roads' surfaces; exit status
+/// 1 beyond `tolerance`.
+fn compare(a: &Path, b: &Path, tolerance: Option<f64>, json: bool) -> Result<std::process::ExitCode, String> {
+    let (ra, rb) = (Arc::new(load(a)?), Arc::new(load(b)?));
+    let c = tools::compare(&ra, &rb, &|_, _, _| {}).map_err(named(a))?;
+    if json {
+        let value = serde_json::json!({
+            "compared": c.compared,
+            "only_in_a": c.only_first,
+            "max_difference": c.max_difference,
+            "signed": c.signed,
+            "at": { "u": c.at[0], "v": c.at[1], "x": c.at[2], "y": c.at[3] },
+            "rms": c.rms,
+        });
+        println!("{}", serde_json::to_string_pretty(&value).map_err(|e| e.to_string())?);
+    } else {
+        println!(
+            "largest difference {:.6} m (B - A = {:.6} m) at u = {:.3}, v = {:.3} (x = {:.3}, y = {:.3})\n\
+             rms {:.6} m over {} nodes of A; {} nodes of A have no surface of B at their x/y",
+            c.max_difference, c.signed, c.at[0], c.at[1], c.at[2], c.at[3], c.rms, c.compared, c.only_first
+        );
+    }
+    if c.compared == 0 {
+        return Err(format!("{} and {}: no grid node of A lies on B", a.display(), b.display()));
+    }
+    if tolerance.is_some_and(|t| c.max_difference > t) {
+        return Ok(std::process::ExitCode::from(1));
     }
     Ok(std::process::ExitCode::SUCCESS)
 }

@@ -119,110 +119,117 @@ pub fn plot(tracks: &[Track], name: &str, segment: f64) -> Result<Figure, String
     let g_range = (10f64.powf(g_min.log10().floor()) * (1.0 - 1e-9), 10f64.powf(g_max.log10().ceil()) * (1.0 + 1e-9));
     Figure::draw(900, 860, None, |root| {
         let (upper, lower) = root.split_vertically(520);
-        upper
-            .draw_text(&format!("{name}: displacement PSD and ISO 8608 classes"), &font(TITLE), (LEFT as i32, 14))
-            .map_err(plot::failed)?;
-        let mut psd = ChartBuilder::on(&upper)
-            .margin_top(44)
-            .margin_right(28)
-            .x_label_area_size(52)
-            .y_label_area_size(LEFT)
-            .build_cartesian_2d((N_RANGE.0..N_RANGE.1).log_scale(), (g_range.0..g_range.1).log_scale())
-            .map_err(plot::failed)?;
-        plot::gridded(&mut psd.configure_mesh())
-            .x_labels(8)
-            .y_labels(12)
-            .x_label_formatter(&|n| plot::decade(*n))
-            .y_label_formatter(&|g| plot::decade(*g))
-            .x_desc("n [cycles/m]")
-            .y_desc("Gd(n) [m³]")
-            .draw()
-            .map_err(plot::failed)?;
-        let (g_lo, g_hi) = (g_range.0.log10(), g_range.1.log10());
-        for limit in CLASS_LIMITS {
-            if let Some(line) = class_line(limit.log10(), g_range) {
-                psd.draw_series(LineSeries::new(line, CLASS_LINE.stroke_width(1))).map_err(plot::failed)?;
-            }
-        }
-        // Each letter on its band's middle line, at the first of these frequencies (the
-        // right half first, where the densities of roads tend to be low) where it lies
-        // well inside the panel.
-        for (k, letter) in CLASSES.iter().enumerate() {
-            let middle = class_middle(k);
-            let place = [2.0, 1.0, 5.0, 0.5, 0.2, 0.1, 0.05, 0.02].into_iter().find_map(|n: f64| {
-                let g = middle - 2.0 * (n.log10() - N0.log10());
-                (g > g_lo + 0.3 && g < g_hi - 0.3).then(|| (n, 10f64.powf(g)))
-            });
-            if let Some(at) = place {
-                psd.draw_series(std::iter::once(Text::new(
-                    letter.to_string(),
-                    at,
-                    font(AXIS).color(&CLASS_LINE).pos(Pos::new(HPos::Center, VPos::Center)),
-                )))
-                .map_err(plot::failed)?;
-            }
-        }
-        for (t, colour) in tracks.iter().zip(COLOURS.iter().cycle()) {
-            let points: Vec<(f64, f64)> = t.psd.bands.iter().filter(|b| b.1 > 0.0).copied().collect();
-            let style = colour.stroke_width(2);
-            psd.draw_series(LineSeries::new(points.iter().copied(), style))
-                .map_err(plot::failed)?
-                .label(format!("v = {} m (class {})", tick(t.v), t.psd.class))
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
-            psd.draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled()))).map_err(plot::failed)?;
-        }
-        plot::legend(&mut psd)?;
-
-        // The IRI per segment: steps along u.
-        let segments = tracks.iter().flat_map(|t| t.segments.iter());
-        let (u0, u1, i_max) = segments.fold((f64::INFINITY, f64::NEG_INFINITY, 0.0f64), |(a, b, m), s| {
-            (a.min(s.u_start), b.max(s.u_end), m.max(s.iri.unwrap_or(0.0)))
-        });
-        let (u0, u1) = if u1 > u0 { (u0, u1) } else { (0.0, 1.0) };
-        let i_hi = if i_max > 0.0 { i_max * 1.15 } else { 1.0 };
-        lower
-            .draw_text(&format!("IRI per {} m segment", tick(segment)), &font(TITLE), (LEFT as i32, 8))
-            .map_err(plot::failed)?;
-        let mut iri = ChartBuilder::on(&lower)
-            .margin_top(36)
-            .margin_right(28)
-            .margin_bottom(8)
-            .x_label_area_size(52)
-            .y_label_area_size(LEFT)
-            .build_cartesian_2d(u0..u1, 0.0..i_hi)
-            .map_err(plot::failed)?;
-        plot::gridded(&mut iri.configure_mesh())
-            .x_labels(10)
-            .y_labels(6)
-            .x_label_formatter(&|v| tick(*v))
-            .y_label_formatter(&|v| tick(*v))
-            .x_desc("u [m]")
-            .y_desc("IRI [m/km]")
-            .draw()
-            .map_err(plot::failed)?;
-        for (t, colour) in tracks.iter().zip(COLOURS.iter().cycle()) {
-            let style = colour.stroke_width(2);
-            // Consecutive segments with an IRI join into one stepped line.
-            let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
-            for s in &t.segments {
-                match s.iri {
-                    Some(v) => runs.last_mut().map_or((), |run| run.extend([(s.u_start, v), (s.u_end, v)])),
-                    None => runs.push(Vec::new()),
-                }
-            }
-            let mut first = true;
-            for run in runs.into_iter().filter(|r| !r.is_empty()) {
-                let drawn = iri.draw_series(LineSeries::new(run, style)).map_err(plot::failed)?;
-                if std::mem::take(&mut first) {
-                    drawn
-                        .label(format!("v = {} m", tick(t.v)))
-                        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
-                }
-            }
-        }
-        plot::legend(&mut iri)?;
-        Ok(())
+        plot_psd(&upper, tracks, name, g_range)?;
+        plot_iri(&lower, tracks, segment)
     })
+}
+
+/// The upper panel: each track's displacement PSD over the ISO 8608 classes.
+fn plot_psd(area: &plot::Area, tracks: &[Track], name: &str, g_range: (f64, f64)) -> Result<(), String> {
+    area.draw_text(&format!("{name}: displacement PSD and ISO 8608 classes"), &font(TITLE), (LEFT as i32, 14))
+        .map_err(plot::failed)?;
+    let mut psd = ChartBuilder::on(area)
+        .margin_top(44)
+        .margin_right(28)
+        .x_label_area_size(52)
+        .y_label_area_size(LEFT)
+        .build_cartesian_2d((N_RANGE.0..N_RANGE.1).log_scale(), (g_range.0..g_range.1).log_scale())
+        .map_err(plot::failed)?;
+    plot::gridded(&mut psd.configure_mesh())
+        .x_labels(8)
+        .y_labels(12)
+        .x_label_formatter(&|n| plot::decade(*n))
+        .y_label_formatter(&|g| plot::decade(*g))
+        .x_desc("n [cycles/m]")
+        .y_desc("Gd(n) [m³]")
+        .draw()
+        .map_err(plot::failed)?;
+    let (g_lo, g_hi) = (g_range.0.log10(), g_range.1.log10());
+    for limit in CLASS_LIMITS {
+        if let Some(line) = class_line(limit.log10(), g_range) {
+            psd.draw_series(LineSeries::new(line, CLASS_LINE.stroke_width(1))).map_err(plot::failed)?;
+        }
+    }
+    // Each letter on its band's middle line, at the first of these frequencies (the
+    // right half first, where the densities of roads tend to be low) where it lies
+    // well inside the panel.
+    for (k, letter) in CLASSES.iter().enumerate() {
+        let middle = class_middle(k);
+        let place = [2.0, 1.0, 5.0, 0.5, 0.2, 0.1, 0.05, 0.02].into_iter().find_map(|n: f64| {
+            let g = middle - 2.0 * (n.log10() - N0.log10());
+            (g > g_lo + 0.3 && g < g_hi - 0.3).then(|| (n, 10f64.powf(g)))
+        });
+        if let Some(at) = place {
+            psd.draw_series(std::iter::once(Text::new(
+                letter.to_string(),
+                at,
+                font(AXIS).color(&CLASS_LINE).pos(Pos::new(HPos::Center, VPos::Center)),
+            )))
+            .map_err(plot::failed)?;
+        }
+    }
+    for (t, colour) in tracks.iter().zip(COLOURS.iter().cycle()) {
+        let points: Vec<(f64, f64)> = t.psd.bands.iter().filter(|b| b.1 > 0.0).copied().collect();
+        let style = colour.stroke_width(2);
+        psd.draw_series(LineSeries::new(points.iter().copied(), style))
+            .map_err(plot::failed)?
+            .label(format!("v = {} m (class {})", tick(t.v), t.psd.class))
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
+        psd.draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled()))).map_err(plot::failed)?;
+    }
+    plot::legend(&mut psd)?;
+    Ok(())
+}
+
+/// The lower panel: the IRI per segment, steps along u.
+fn plot_iri(area: &plot::Area, tracks: &[Track], segment: f64) -> Result<(), String> {
+    let segments = tracks.iter().flat_map(|t| t.segments.iter());
+    let (u0, u1, i_max) = segments.fold((f64::INFINITY, f64::NEG_INFINITY, 0.0f64), |(a, b, m), s| {
+        (a.min(s.u_start), b.max(s.u_end), m.max(s.iri.unwrap_or(0.0)))
+    });
+    let (u0, u1) = if u1 > u0 { (u0, u1) } else { (0.0, 1.0) };
+    let i_hi = if i_max > 0.0 { i_max * 1.15 } else { 1.0 };
+    area.draw_text(&format!("IRI per {} m segment", tick(segment)), &font(TITLE), (LEFT as i32, 8))
+        .map_err(plot::failed)?;
+    let mut iri = ChartBuilder::on(area)
+        .margin_top(36)
+        .margin_right(28)
+        .margin_bottom(8)
+        .x_label_area_size(52)
+        .y_label_area_size(LEFT)
+        .build_cartesian_2d(u0..u1, 0.0..i_hi)
+        .map_err(plot::failed)?;
+    plot::gridded(&mut iri.configure_mesh())
+        .x_labels(10)
+        .y_labels(6)
+        .x_label_formatter(&|v| tick(*v))
+        .y_label_formatter(&|v| tick(*v))
+        .x_desc("u [m]")
+        .y_desc("IRI [m/km]")
+        .draw()
+        .map_err(plot::failed)?;
+    for (t, colour) in tracks.iter().zip(COLOURS.iter().cycle()) {
+        let style = colour.stroke_width(2);
+        // Consecutive segments with an IRI join into one stepped line.
+        let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
+        for s in &t.segments {
+            match s.iri {
+                Some(v) => runs.last_mut().map_or((), |run| run.extend([(s.u_start, v), (s.u_end, v)])),
+                None => runs.push(Vec::new()),
+            }
+        }
+        let mut first = true;
+        for run in runs.into_iter().filter(|r| !r.is_empty()) {
+            let drawn = iri.draw_series(LineSeries::new(run, style)).map_err(plot::failed)?;
+            if std::mem::take(&mut first) {
+                drawn
+                    .label(format!("v = {} m", tick(t.v)))
+                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
+            }
+        }
+    }
+    plot::legend(&mut iri)?;
+    Ok(())
 }
 
 /// `opencrg roughness`: the road's wheel tracks (`tracks`, or the default three) as text

@@ -237,3 +237,81 @@ fn a_path_to_a_root_item_is_found() {
     let paths = crate_paths("use crate::{Road, model::grid::Grid};\nlet x = $crate::y::z; other_crate::w;");
     assert_eq!(paths, vec![vec!["Road".to_string()], vec!["model".into(), "grid".into(), "Grid".into()]]);
 }
+
+/// The functions of a source (outside its unit tests) longer than `limit` lines, as
+/// `name (lines)`: a function runs from its `fn` line to the first `}` at that line's
+/// indentation (the code is formatted by rustfmt).
+fn long_functions(text: &str, limit: usize) -> Vec<String> {
+    let lines: Vec<&str> = text.split("#[cfg(test)]\nmod tests").next().unwrap().lines().collect();
+    let mut out = Vec::new();
+    for (i, line) in lines.iter().enumerate() {
+        let trimmed = line.trim_start();
+        let Some(at) = trimmed.find("fn ") else { continue };
+        let head = &trimmed[..at];
+        let is_fn = head.split_whitespace().all(|w| {
+            matches!(w, "pub" | "pub(crate)" | "pub(super)" | "const" | "unsafe" | "async" | "extern" | "\"C\"")
+        });
+        if !is_fn || trimmed.starts_with("//") || line.trim_end().ends_with(';') {
+            continue;
+        }
+        let indent = &line[..line.len() - trimmed.len()];
+        let close = format!("{indent}}}");
+        let Some(end) = lines[i..].iter().position(|l| l.trim_end() == close) else { continue };
+        if end + 1 > limit {
+            let name = trimmed[at + 3..].split(|c: char| !c.is_alphanumeric() && c != '_').next().unwrap_or("");
+            out.push(format!("{name} ({} lines)", end + 1));
+        }
+    }
+    out
+}
+
+#[test]
+fn no_function_outside_tests_is_longer_than_100_lines() {
+    let mut long = Vec::new();
+    for krate in CRATES {
+        let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join(krate).join("src");
+        let mut dirs = vec![src];
+        while let Some(dir) = dirs.pop() {
+            for entry in std::fs::read_dir(&dir).unwrap() {
+                let path = entry.unwrap().path();
+                if path.is_dir() {
+                    dirs.push(path);
+                } else if path.extension().is_some_and(|e| e == "rs") {
+                    let text = std::fs::read_to_string(&path).unwrap();
+                    long.extend(long_functions(&text, 100).into_iter().map(|f| format!("{}: {f}", path.display())));
+                }
+            }
+        }
+    }
+    long.sort();
+    assert!(long.is_empty(), "functions over 100 lines:\n{}", long.join("\n"));
+}
+
+#[test]
+fn a_long_function_is_found() {
+    let body = "    let a = 1;\n".repeat(101);
+    let text = format!("pub(crate) fn long(x: u8) -> u8 {{\n{body}}}\nfn short() {{\n}}\n");
+    assert_eq!(long_functions(&text, 100), vec!["long (103 lines)"]);
+    assert!(long_functions(&text, 103).is_empty());
+    let in_tests = format!("#[cfg(test)]\nmod tests {{\n{text}}}\n");
+    assert!(long_functions(&in_tests, 100).is_empty());
+}
+
+#[test]
+fn the_evaluator_hides_no_public_item() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut dirs = vec![src];
+    while let Some(dir) = dirs.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                dirs.push(path);
+            } else if std::fs::read_to_string(&path).unwrap().contains("#[doc(hidden)]") {
+                panic!(
+                    "{}: an item hidden from the documentation (public API is documented, the rest is not public)",
+                    path.display()
+                );
+            }
+        }
+    }
+}

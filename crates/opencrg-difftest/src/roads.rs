@@ -46,6 +46,32 @@ enum Heading {
     Loop(f64),
 }
 
+impl Heading {
+    /// A random heading for a line of `nu` cross sections over `length` (loops need 8).
+    fn draw(rng: &mut Rng, nu: usize, length: f64) -> Heading {
+        match rng.int(0, 19) {
+            0..=6 => Heading::None,
+            7 | 8 => Heading::Constant,
+            9..=13 => Heading::Curving(rng.range(-1.0, 1.0) * (PI / length).min(0.3)),
+            14 | 15 => Heading::Wavy(rng.range(0.05, 0.6), rng.range(0.3, 1.5) * length),
+            16 | 17 if nu >= 8 => Heading::Loop(1.0),
+            _ if nu >= 8 => Heading::Loop(rng.pick(&[0.97, 0.995, 1.02])),
+            _ => Heading::None,
+        }
+    }
+
+    /// The heading's kind and parameters, for reports.
+    fn describe(self) -> String {
+        match self {
+            Heading::None => "straight".to_string(),
+            Heading::Constant => "phi constant".to_string(),
+            Heading::Curving(k) => format!("curving k={k:.4}"),
+            Heading::Wavy(a, p) => format!("wavy a={a:.3} p={p:.2}"),
+            Heading::Loop(t) => format!("loop {t}"),
+        }
+    }
+}
+
 /// Option keywords of `$ROAD_CRG_OPTS` with the values the generator draws from.
 const OPTION_LINES: [(&str, &[f64]); 9] = [
     ("BORDER_MODE_U", &[0.0, 1.0, 2.0, 3.0, 4.0]),
@@ -129,25 +155,13 @@ pub fn generate(rng: &mut Rng, index: usize) -> RoadFiles {
     let format = rng.pick(&[Format::Lrfi, Format::Ldfi, Format::Krbi, Format::Kdbi]);
     let nu = if rng.chance(0.1) { rng.int(2, 5) } else { rng.int(8, 60) } as usize;
     let u_inc = rng.pick(&[0.01, 0.1, 0.2, 0.25, 0.5, 1.0, 2.5]);
-    let u_start = match rng.int(0, 9) {
-        0..=5 => 0.0,
-        6 | 7 => (rng.range(-30.0, 30.0) * 4.0).round() / 4.0,
-        _ => (rng.range(1e3, 1e5) * if rng.chance(0.5) { 1.0 } else { -1.0 }).round(),
-    };
+    let u_start = u_start(rng);
     let u_end = u_start + (nu - 1) as f64 * u_inc;
     let length = u_end - u_start;
     let mut summary = vec![format!("{} nu={nu} du={u_inc} u0={u_start}", format.name())];
 
     // --- reference line ---
-    let heading = match rng.int(0, 19) {
-        0..=6 => Heading::None,
-        7 | 8 => Heading::Constant,
-        9..=13 => Heading::Curving(rng.range(-1.0, 1.0) * (PI / length).min(0.3)),
-        14 | 15 => Heading::Wavy(rng.range(0.05, 0.6), rng.range(0.3, 1.5) * length),
-        16 | 17 if nu >= 8 => Heading::Loop(1.0),
-        _ if nu >= 8 => Heading::Loop(rng.pick(&[0.97, 0.995, 1.02])),
-        _ => Heading::None,
-    };
+    let heading = Heading::draw(rng, nu, length);
     let phi0_given = rng.chance(0.5);
     let any_phi = rng.range(-PI, PI);
     let phi0 = if phi0_given { rng.pick(&[any_phi, 0.0, 7.0]) } else { 0.0 };
@@ -161,78 +175,193 @@ pub fn generate(rng: &mut Rng, index: usize) -> RoadFiles {
         }
     };
     let xy0_given = rng.chance(0.6);
-    let (x0, y0) = if !xy0_given {
-        (0.0, 0.0)
-    } else if rng.chance(0.15) {
-        (rng.range(-2e5, 2e5).round(), rng.range(-2e5, 2e5).round())
-    } else {
-        (rng.range(-500.0, 500.0), rng.range(-500.0, 500.0))
-    };
-    summary.push(match heading {
-        Heading::None => "straight".to_string(),
-        Heading::Constant => "phi constant".to_string(),
-        Heading::Curving(k) => format!("curving k={k:.4}"),
-        Heading::Wavy(a, p) => format!("wavy a={a:.3} p={p:.2}"),
-        Heading::Loop(t) => format!("loop {t}"),
-    });
+    let (x0, y0) = if xy0_given { start_point(rng) } else { (0.0, 0.0) };
+    summary.push(heading.describe());
 
     let mut h = String::new();
     let _ = writeln!(h, "$CT\ndifftest road {index}\n$");
     let _ = writeln!(h, "$ROAD_CRG");
-    let mut kv = |k: &str, v: f64| {
-        let _ = writeln!(h, "{k} = {v:?}");
-    };
-    kv("REFERENCE_LINE_START_U", u_start);
+    kv(&mut h, "REFERENCE_LINE_START_U", u_start);
     if !(format == Format::Lrfi || format == Format::Ldfi) || rng.chance(0.8) {
-        kv("REFERENCE_LINE_END_U", u_end);
+        kv(&mut h, "REFERENCE_LINE_END_U", u_end);
     }
-    kv("REFERENCE_LINE_INCREMENT", u_inc);
+    kv(&mut h, "REFERENCE_LINE_INCREMENT", u_inc);
     if xy0_given {
-        kv("REFERENCE_LINE_START_X", x0);
-        kv("REFERENCE_LINE_START_Y", y0);
+        kv(&mut h, "REFERENCE_LINE_START_X", x0);
+        kv(&mut h, "REFERENCE_LINE_START_Y", y0);
     }
     if phi0_given {
-        kv("REFERENCE_LINE_START_PHI", phi0);
+        kv(&mut h, "REFERENCE_LINE_START_PHI", phi0);
     }
     let has_phi = !matches!(heading, Heading::None);
     if has_phi && rng.chance(0.5) {
-        kv("REFERENCE_LINE_END_PHI", phi_at(nu - 1));
+        kv(&mut h, "REFERENCE_LINE_END_PHI", phi_at(nu - 1));
     } else if !has_phi && rng.chance(0.1) {
-        kv("REFERENCE_LINE_END_PHI", phi0 + 0.3);
+        kv(&mut h, "REFERENCE_LINE_END_PHI", phi0 + 0.3);
         summary.push("end phi differs".into());
     }
     if rng.chance(0.25) {
-        // The end point: where forward steps along the heading lead, sometimes a little off.
-        let (mut x, mut y) = (x0, y0);
-        for i in 1..nu {
-            x += u_inc * phi_at(i).cos();
-            y += u_inc * phi_at(i).sin();
-        }
-        if rng.chance(0.5) {
-            // A little off, as rounding in files leaves it (far off, the line folds back
-            // and the reference's x/y search can loop forever).
-            x += rng.range(-0.01, 0.01) * length;
-            y += rng.range(-0.01, 0.01) * length;
-        }
-        kv("REFERENCE_LINE_END_X", x);
-        kv("REFERENCE_LINE_END_Y", y);
+        end_point(rng, &mut h, (x0, y0), nu, u_inc, length, &phi_at);
         summary.push("end x/y".into());
     }
 
     // --- slope and banking: none, header constants, or channels ---
     let mut channel_kinds: Vec<(&str, &str)> = Vec::new();
-    let mut channel_fns: Vec<Box<dyn Fn(usize) -> f64>> = Vec::new();
+    let mut channel_fns: Vec<Channel> = Vec::new();
     if has_phi {
         channel_kinds.push(("phi", "rad"));
         channel_fns.push(Box::new(phi_at));
     }
+    slope_and_banking(rng, &mut h, &mut summary, &mut channel_kinds, &mut channel_fns);
+    if rng.chance(0.3) {
+        kv(&mut h, "REFERENCE_LINE_START_Z", rng.range(-10.0, 300.0));
+        if rng.chance(0.4) {
+            kv(&mut h, "REFERENCE_LINE_END_Z", rng.range(-10.0, 300.0));
+        }
+    }
+
+    // --- long sections ---
+    let sections = long_sections(rng, &mut h, &mut summary);
+    let _ = writeln!(h, "$");
+
+    // --- elevation ---
+    let grid = elevation(rng, nu, u_inc, &sections, &mut summary);
+
+    // --- settings in the file ---
+    let (opts, mods) = settings_sections(rng);
+    let by_reference = rng.chance(0.15);
+    let (own_opts, own_mods) = if by_reference { settings_sections(rng) } else { (opts.clone(), mods.clone()) };
+    h += &section("$ROAD_CRG_OPTS", &own_opts);
+    if !own_mods.is_empty() || rng.chance(0.1) {
+        h += &section("$ROAD_CRG_MODS", &own_mods);
+    }
+    if !opts.is_empty() || !mods.is_empty() {
+        summary.push("settings in file".into());
+    }
+
+    // --- data definition and data ---
+    let data = data_records(h, format, &channel_kinds, &channel_fns, &sections, &grid);
+    if by_reference {
+        summary.push("file reference".into());
+    }
+    RoadFiles { files: files(index, by_reference, &opts, &mods, data), summary: summary.join(", ") }
+}
+
+/// The header's end point: where forward steps along the heading lead, sometimes a
+/// little off.
+fn end_point(
+    rng: &mut Rng,
+    h: &mut String,
+    start: (f64, f64),
+    nu: usize,
+    u_inc: f64,
+    length: f64,
+    phi_at: &dyn Fn(usize) -> f64,
+) {
+    // The end point: where forward steps along the heading lead, sometimes a little off.
+    let (mut x, mut y) = start;
+    for i in 1..nu {
+        x += u_inc * phi_at(i).cos();
+        y += u_inc * phi_at(i).sin();
+    }
+    if rng.chance(0.5) {
+        // A little off, as rounding in files leaves it (far off, the line folds back
+        // and the reference's x/y search can loop forever).
+        x += rng.range(-0.01, 0.01) * length;
+        y += rng.range(-0.01, 0.01) * length;
+    }
+    kv(h, "REFERENCE_LINE_END_X", x);
+    kv(h, "REFERENCE_LINE_END_Y", y);
+}
+
+/// The data definition after the header `h`, then the records in the file's format.
+fn data_records(
+    mut h: String,
+    format: Format,
+    channel_kinds: &[(&str, &str)],
+    channel_fns: &[Channel],
+    sections: &[(String, f64)],
+    grid: &[f64],
+) -> Vec<u8> {
+    let (nv, nu) = (sections.len(), grid.len() / sections.len());
+    let _ = writeln!(h, "$KD_Definition\n#:{}", format.name());
+    for (name, unit) in channel_kinds {
+        let _ = writeln!(h, "D:reference line {name},{unit}");
+    }
+    for (def, _) in sections {
+        let _ = writeln!(h, "{def}");
+    }
+    let _ = writeln!(h, "$\n{}", "$".repeat(80));
+    let mut data = h.into_bytes();
+    let mut record = Vec::with_capacity(channel_fns.len() + nv);
+    for i in 0..nu {
+        record.clear();
+        record.extend(channel_fns.iter().map(|f| f(i)));
+        record.extend_from_slice(&grid[i * nv..(i + 1) * nv]);
+        write_record(&mut data, format, &record);
+    }
+    data
+}
+
+/// The road's files: the data alone, or a main file naming it with the settings.
+fn files(index: usize, by_reference: bool, opts: &str, mods: &str, data: Vec<u8>) -> Vec<(String, Vec<u8>)> {
+    let mut files = Vec::new();
+    if by_reference {
+        let mut main = String::new();
+        let _ = writeln!(main, "$CT\ndifftest road {index}, data by reference\n$");
+        let _ = writeln!(main, "$ROAD_CRG_FILE\n  data.crg   ! the data\n$");
+        main += &section("$ROAD_CRG_OPTS", opts);
+        main += &section("$ROAD_CRG_MODS", mods);
+        files.push(("road.crg".to_string(), main.into_bytes()));
+        files.push(("data.crg".to_string(), data));
+    } else {
+        files.push(("road.crg".to_string(), data));
+    }
+    files
+}
+
+/// The first u: 0 mostly, a quarter metre near it, or far from it either way.
+fn u_start(rng: &mut Rng) -> f64 {
+    match rng.int(0, 9) {
+        0..=5 => 0.0,
+        6 | 7 => (rng.range(-30.0, 30.0) * 4.0).round() / 4.0,
+        _ => (rng.range(1e3, 1e5) * if rng.chance(0.5) { 1.0 } else { -1.0 }).round(),
+    }
+}
+
+/// A start point given in the header: near the origin, or far off in whole metres.
+fn start_point(rng: &mut Rng) -> (f64, f64) {
+    if rng.chance(0.15) {
+        (rng.range(-2e5, 2e5).round(), rng.range(-2e5, 2e5).round())
+    } else {
+        (rng.range(-500.0, 500.0), rng.range(-500.0, 500.0))
+    }
+}
+
+/// A channel's value by cross section.
+type Channel<'a> = Box<dyn Fn(usize) -> f64 + 'a>;
+
+/// Writes a header line `k = v` (the value as Rust prints it: it reads back the same).
+fn kv(h: &mut String, k: &str, v: f64) {
+    let _ = writeln!(h, "{k} = {v:?}");
+}
+
+/// Slope and banking: none, header constants, or channels (their names and units, and
+/// their values by cross section).
+fn slope_and_banking<'a>(
+    rng: &mut Rng,
+    h: &mut String,
+    summary: &mut Vec<String>,
+    channel_kinds: &mut Vec<(&'static str, &'static str)>,
+    channel_fns: &mut Vec<Channel<'a>>,
+) {
     for (name, keyword) in [("slope", "S"), ("banking", "B")] {
         match rng.int(0, 9) {
             0..=4 => {}
             5 | 6 => {
-                kv(&format!("REFERENCE_LINE_START_{keyword}"), rng.range(-0.08, 0.08));
+                kv(h, &format!("REFERENCE_LINE_START_{keyword}"), rng.range(-0.08, 0.08));
                 if rng.chance(0.5) {
-                    kv(&format!("REFERENCE_LINE_END_{keyword}"), rng.range(-0.08, 0.08));
+                    kv(h, &format!("REFERENCE_LINE_END_{keyword}"), rng.range(-0.08, 0.08));
                 }
                 summary.push(format!("{name} header"));
             }
@@ -251,14 +380,11 @@ pub fn generate(rng: &mut Rng, index: usize) -> RoadFiles {
             }
         }
     }
-    if rng.chance(0.3) {
-        kv("REFERENCE_LINE_START_Z", rng.range(-10.0, 300.0));
-        if rng.chance(0.4) {
-            kv("REFERENCE_LINE_END_Z", rng.range(-10.0, 300.0));
-        }
-    }
+}
 
-    // --- long sections ---
+/// The long sections: their definition lines and v, numbered (with the header's v range
+/// in one of three ways) or at given v (even, uneven, unsorted).
+fn long_sections(rng: &mut Rng, h: &mut String, summary: &mut Vec<String>) -> Vec<(String, f64)> {
     let nv = rng.int(2, 10) as usize;
     let mut sections: Vec<(String, f64)> = Vec::new();
     if rng.chance(0.5) {
@@ -269,17 +395,17 @@ pub fn generate(rng: &mut Rng, index: usize) -> RoadFiles {
         match rng.int(0, 5) {
             0 => summary.push("numbered, increment only".into()),
             1 => {
-                kv("LONG_SECTION_V_RIGHT", v_right);
+                kv(h, "LONG_SECTION_V_RIGHT", v_right);
                 summary.push("numbered, right border only".into());
             }
             _ => {
-                kv("LONG_SECTION_V_RIGHT", v_right);
-                kv("LONG_SECTION_V_LEFT", v_left);
+                kv(h, "LONG_SECTION_V_RIGHT", v_right);
+                kv(h, "LONG_SECTION_V_LEFT", v_left);
                 summary.push("numbered".into());
             }
         }
         if rng.chance(0.9) {
-            kv("LONG_SECTION_V_INCREMENT", v_inc);
+            kv(h, "LONG_SECTION_V_INCREMENT", v_inc);
         } else {
             summary.push("no v increment".into());
         }
@@ -296,11 +422,11 @@ pub fn generate(rng: &mut Rng, index: usize) -> RoadFiles {
             v += if even { step } else { step * rng.range(0.3, 2.5) };
         }
         if rng.chance(0.5) {
-            kv("LONG_SECTION_V_RIGHT", vs[0]);
-            kv("LONG_SECTION_V_LEFT", vs[nv - 1]);
+            kv(h, "LONG_SECTION_V_RIGHT", vs[0]);
+            kv(h, "LONG_SECTION_V_LEFT", vs[nv - 1]);
         }
         if rng.chance(0.2) {
-            kv("LONG_SECTION_V_INCREMENT", step);
+            kv(h, "LONG_SECTION_V_INCREMENT", step);
         }
         let mut order: Vec<usize> = (0..nv).collect();
         let shuffled = rng.chance(0.2);
@@ -318,9 +444,13 @@ pub fn generate(rng: &mut Rng, index: usize) -> RoadFiles {
             if shuffled { ", unsorted" } else { "" }
         ));
     }
-    let _ = writeln!(h, "$");
+    sections
+}
 
-    // --- elevation ---
+/// The elevation grid, cross section by cross section: smooth waves with NaN cells,
+/// borders or a first row now and then.
+fn elevation(rng: &mut Rng, nu: usize, u_inc: f64, sections: &[(String, f64)], summary: &mut Vec<String>) -> Vec<f64> {
+    let nv = sections.len();
     let (a, w1, b, c, w2) = (
         rng.range(-0.05, 0.05),
         rng.range(0.2, 3.0),
@@ -351,51 +481,7 @@ pub fn generate(rng: &mut Rng, index: usize) -> RoadFiles {
                 if nan { f64::NAN } else { a * (w1 * u).sin() + b * v + c * (w2 * v).cos() + 0.001 * j as f64 };
         }
     }
-
-    // --- settings in the file ---
-    let (opts, mods) = settings_sections(rng);
-    let by_reference = rng.chance(0.15);
-    let (own_opts, own_mods) = if by_reference { settings_sections(rng) } else { (opts.clone(), mods.clone()) };
-    h += &section("$ROAD_CRG_OPTS", &own_opts);
-    if !own_mods.is_empty() || rng.chance(0.1) {
-        h += &section("$ROAD_CRG_MODS", &own_mods);
-    }
-    if !opts.is_empty() || !mods.is_empty() {
-        summary.push("settings in file".into());
-    }
-
-    // --- data definition and data ---
-    let _ = writeln!(h, "$KD_Definition\n#:{}", format.name());
-    for (name, unit) in &channel_kinds {
-        let _ = writeln!(h, "D:reference line {name},{unit}");
-    }
-    for (def, _) in &sections {
-        let _ = writeln!(h, "{def}");
-    }
-    let _ = writeln!(h, "$\n{}", "$".repeat(80));
-    let mut data = h.into_bytes();
-    let mut record = Vec::with_capacity(channel_fns.len() + nv);
-    for i in 0..nu {
-        record.clear();
-        record.extend(channel_fns.iter().map(|f| f(i)));
-        record.extend_from_slice(&grid[i * nv..(i + 1) * nv]);
-        write_record(&mut data, format, &record);
-    }
-
-    let mut files = Vec::new();
-    if by_reference {
-        let mut main = String::new();
-        let _ = writeln!(main, "$CT\ndifftest road {index}, data by reference\n$");
-        let _ = writeln!(main, "$ROAD_CRG_FILE\n  data.crg   ! the data\n$");
-        main += &section("$ROAD_CRG_OPTS", &opts);
-        main += &section("$ROAD_CRG_MODS", &mods);
-        files.push(("road.crg".to_string(), main.into_bytes()));
-        files.push(("data.crg".to_string(), data));
-        summary.push("file reference".into());
-    } else {
-        files.push(("road.crg".to_string(), data));
-    }
-    RoadFiles { files, summary: summary.join(", ") }
+    grid
 }
 
 /// Appends one record in the file's data format.

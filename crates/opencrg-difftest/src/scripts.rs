@@ -61,10 +61,6 @@ const OPTIONS: [(u32, bool, &[f64]); 17] = [
 /// One random script for the road in `road.crg`.
 pub fn generate(rng: &mut Rng) -> String {
     let mut s = String::from("load road.crg\ninfo\n");
-    let line = |s: &mut String, text: String| {
-        s.push_str(&text);
-        s.push('\n');
-    };
     if rng.chance(0.9) {
         line(&mut s, "check".into());
     }
@@ -74,30 +70,7 @@ pub fn generate(rng: &mut Rng) -> String {
         line(&mut s, format!("modgd {id}"));
     }
     if rng.chance(0.5) {
-        line(&mut s, if rng.chance(0.8) { "modrm".into() } else { "modsetdef".into() });
-        let by_refpoint = rng.chance(0.5);
-        for (id, int, values) in MODIFIERS {
-            let relocation = (m::REFPOINT_V..=m::REFLINE_ROTCENTER_Y).contains(&id);
-            let refpoint_group = (m::REFPOINT_V..=m::REFPOINT_PHI).contains(&id);
-            let p = if !relocation {
-                0.2
-            } else if refpoint_group == by_refpoint {
-                0.35
-            } else {
-                0.03
-            };
-            if rng.chance(p) {
-                let v = rng.pick(values);
-                line(&mut s, if int { format!("modi {id} {v}") } else { format!("modd {id} {v:?}") });
-            }
-        }
-        if rng.chance(0.05) {
-            line(&mut s, format!("modi {} 1", m::SCALE_Z));
-            line(&mut s, format!("modd {} 1.0", m::GRID_NAN_MODE));
-        }
-        if rng.chance(0.5) {
-            line(&mut s, "check".into());
-        }
+        modifiers(rng, &mut s);
     }
     for id in [m::GRID_NAN_MODE, m::REFPOINT_V, m::REFPOINT_V_FRAC, m::REFPOINT_U_FRAC] {
         line(&mut s, format!("modgi {id}"));
@@ -130,37 +103,80 @@ pub fn generate(rng: &mut Rng) -> String {
         line(&mut s, format!("optgd {id}"));
     }
 
+    queries(rng, &mut s);
+    let _ = writeln!(s, "cpdel");
+    s
+}
+
+/// Appends one line to a script.
+fn line(s: &mut String, text: String) {
+    s.push_str(&text);
+    s.push('\n');
+}
+
+/// Modifiers removed or set to their defaults, then some set (the reference point's or
+/// the offsets' group mostly, not both).
+fn modifiers(rng: &mut Rng, s: &mut String) {
+    line(s, if rng.chance(0.8) { "modrm".into() } else { "modsetdef".into() });
+    let by_refpoint = rng.chance(0.5);
+    for (id, int, values) in MODIFIERS {
+        let relocation = (m::REFPOINT_V..=m::REFLINE_ROTCENTER_Y).contains(&id);
+        let refpoint_group = (m::REFPOINT_V..=m::REFPOINT_PHI).contains(&id);
+        let p = if !relocation {
+            0.2
+        } else if refpoint_group == by_refpoint {
+            0.35
+        } else {
+            0.03
+        };
+        if rng.chance(p) {
+            let v = rng.pick(values);
+            line(s, if int { format!("modi {id} {v}") } else { format!("modd {id} {v:?}") });
+        }
+    }
+    if rng.chance(0.05) {
+        line(s, format!("modi {} 1", m::SCALE_Z));
+        line(s, format!("modd {} 1.0", m::GRID_NAN_MODE));
+    }
+    if rng.chance(0.5) {
+        line(s, "check".into());
+    }
+}
+
+/// The queries: a grid past every border, the exact borders and corners, random points on
+/// and off the road, far outside, and paths.
+fn queries(rng: &mut Rng, s: &mut String) {
     // A grid reaching 30 % of the length and 40 % of the width past every border.
     let (nu, nv) = (rng.int(4, 12), rng.int(3, 8));
     for a in 0..=nu {
         for b in 0..=nv {
             let fu = -0.3 + 1.6 * a as f64 / nu as f64;
             let fv = -0.4 + 1.8 * b as f64 / nv as f64;
-            line(&mut s, format!("qf {fu:?} {fv:?}"));
+            line(s, format!("qf {fu:?} {fv:?}"));
         }
     }
     // Exact borders and corners.
     for fu in [0.0, 1.0, 0.5] {
         for fv in [0.0, 1.0, 0.5] {
-            line(&mut s, format!("qf {fu:?} {fv:?}"));
+            line(s, format!("qf {fu:?} {fv:?}"));
         }
     }
     // Random points inside, and off the road in x/y.
     for _ in 0..rng.int(5, 25) {
         let (fu, fv) = (rng.unit(), rng.unit());
-        line(&mut s, format!("qf {fu:?} {fv:?}"));
+        line(s, format!("qf {fu:?} {fv:?}"));
     }
     for _ in 0..rng.int(2, 8) {
         let (fu, fv) = (rng.range(-0.2, 1.2), rng.range(-0.2, 1.2));
         let (dx, dy) = (rng.range(-3.0, 3.0), rng.range(-3.0, 3.0));
-        line(&mut s, format!("qo {fu:?} {fv:?} {dx:?} {dy:?}"));
+        line(s, format!("qo {fu:?} {fv:?} {dx:?} {dy:?}"));
     }
     // Far outside.
     for _ in 0..rng.int(1, 4) {
         let (fu, fv) = (rng.pick(&[-10.0, 11.0, 0.5]), rng.pick(&[-30.0, 31.0, 0.5]));
-        line(&mut s, format!("qf {fu:?} {fv:?}"));
+        line(s, format!("qf {fu:?} {fv:?}"));
         let (x, y) = (rng.range(-1e4, 1e4), rng.range(-1e4, 1e4));
-        line(&mut s, format!("xy {x:?} {y:?}"));
+        line(s, format!("xy {x:?} {y:?}"));
     }
     // Paths: small steps along u with a slowly changing v, forwards or backwards; some
     // so small that many steps fall in one grid cell (a wheel at walking pace).
@@ -171,15 +187,13 @@ pub fn generate(rng: &mut Rng) -> String {
         let du = rng.range(-reach, reach);
         for k in 0..steps {
             let fv = fv0 + 0.1 * (k as f64 * 0.2).sin();
-            line(&mut s, format!("qf {fu:?} {fv:?}"));
+            line(s, format!("qf {fu:?} {fv:?}"));
             fu += du;
         }
     }
     if rng.chance(0.1) {
-        line(&mut s, "optrmall".into());
-        line(&mut s, "qf 0.5 0.5".into());
-        line(&mut s, "qf 1.2 -0.2".into());
+        line(s, "optrmall".into());
+        line(s, "qf 0.5 0.5".into());
+        line(s, "qf 1.2 -0.2".into());
     }
-    let _ = writeln!(s, "cpdel");
-    s
 }

@@ -161,30 +161,7 @@ pub fn model_description(fmi: Fmi, kind: Kind, meta: &Meta, variables: &[Variabl
             Fmi::V3 => String::new(),
         },
     );
-    match fmi {
-        Fmi::V2 => {
-            let common = "needsExecutionTool=\"false\" canBeInstantiatedOnlyOncePerProcess=\"false\" canNotUseMemoryManagementFunctions=\"true\" canGetAndSetFMUstate=\"false\" canSerializeFMUstate=\"false\" providesDirectionalDerivative=\"false\"";
-            let _ = writeln!(
-                x,
-                "  <ModelExchange modelIdentifier=\"{id}\" {common} completedIntegratorStepNotNeeded=\"true\"/>"
-            );
-            let _ = writeln!(
-                x,
-                "  <CoSimulation modelIdentifier=\"{id}\" {common} canHandleVariableCommunicationStepSize=\"true\" canInterpolateInputs=\"false\" maxOutputDerivativeOrder=\"0\" canRunAsynchronuously=\"false\"/>"
-            );
-        }
-        Fmi::V3 => {
-            let common = "needsExecutionTool=\"false\" canBeInstantiatedOnlyOncePerProcess=\"false\" canGetAndSetFMUState=\"false\" canSerializeFMUState=\"false\" providesDirectionalDerivatives=\"false\" providesAdjointDerivatives=\"false\"";
-            let _ = writeln!(
-                x,
-                "  <ModelExchange modelIdentifier=\"{id}\" {common} needsCompletedIntegratorStep=\"false\"/>"
-            );
-            let _ = writeln!(
-                x,
-                "  <CoSimulation modelIdentifier=\"{id}\" {common} canHandleVariableCommunicationStepSize=\"true\" maxOutputDerivativeOrder=\"0\" providesIntermediateUpdate=\"false\" mightReturnEarlyFromDoStep=\"false\" canReturnEarlyAfterIntermediateUpdate=\"false\" hasEventMode=\"false\"/>"
-            );
-        }
-    }
+    capabilities(&mut x, fmi, &id);
     let _ = writeln!(x, "  <UnitDefinitions>");
     for (name, m, rad) in UNITS {
         let base = match (m, rad) {
@@ -213,6 +190,42 @@ pub fn model_description(fmi: Fmi, kind: Kind, meta: &Meta, variables: &[Variabl
         }
     }
     let _ = writeln!(x, "  </ModelVariables>");
+    model_structure(&mut x, fmi, kind, variables, &indicators);
+    let _ = writeln!(x, "  </ModelStructure>\n</fmiModelDescription>");
+    x
+}
+
+/// The `<ModelExchange>` and `<CoSimulation>` elements: what the binary can do.
+fn capabilities(x: &mut String, fmi: Fmi, id: &str) {
+    match fmi {
+        Fmi::V2 => {
+            let common = "needsExecutionTool=\"false\" canBeInstantiatedOnlyOncePerProcess=\"false\" canNotUseMemoryManagementFunctions=\"true\" canGetAndSetFMUstate=\"false\" canSerializeFMUstate=\"false\" providesDirectionalDerivative=\"false\"";
+            let _ = writeln!(
+                x,
+                "  <ModelExchange modelIdentifier=\"{id}\" {common} completedIntegratorStepNotNeeded=\"true\"/>"
+            );
+            let _ = writeln!(
+                x,
+                "  <CoSimulation modelIdentifier=\"{id}\" {common} canHandleVariableCommunicationStepSize=\"true\" canInterpolateInputs=\"false\" maxOutputDerivativeOrder=\"0\" canRunAsynchronuously=\"false\"/>"
+            );
+        }
+        Fmi::V3 => {
+            let common = "needsExecutionTool=\"false\" canBeInstantiatedOnlyOncePerProcess=\"false\" canGetAndSetFMUState=\"false\" canSerializeFMUState=\"false\" providesDirectionalDerivatives=\"false\" providesAdjointDerivatives=\"false\"";
+            let _ = writeln!(
+                x,
+                "  <ModelExchange modelIdentifier=\"{id}\" {common} needsCompletedIntegratorStep=\"false\"/>"
+            );
+            let _ = writeln!(
+                x,
+                "  <CoSimulation modelIdentifier=\"{id}\" {common} canHandleVariableCommunicationStepSize=\"true\" maxOutputDerivativeOrder=\"0\" providesIntermediateUpdate=\"false\" mightReturnEarlyFromDoStep=\"false\" canReturnEarlyAfterIntermediateUpdate=\"false\" hasEventMode=\"false\"/>"
+            );
+        }
+    }
+}
+
+/// The `<ModelStructure>`: the outputs, the initial unknowns with what they depend on,
+/// and (FMI 3) the event indicators.
+fn model_structure(x: &mut String, fmi: Fmi, kind: Kind, variables: &[Variable], indicators: &[&Variable]) {
     let _ = writeln!(x, "  <ModelStructure>");
     // FMI 2 names variables by their index in the list (from 1), FMI 3 by value reference.
     let index_of = |vr: u32| -> u32 {
@@ -239,7 +252,7 @@ pub fn model_description(fmi: Fmi, kind: Kind, meta: &Meta, variables: &[Variabl
         let _ = writeln!(x, "    <Outputs>");
     }
     for v in &outputs {
-        unknown(&mut x, output, v, &v.depends_on);
+        unknown(x, output, v, &v.depends_on);
     }
     if fmi == Fmi::V2 {
         let _ = writeln!(x, "    </Outputs>\n    <InitialUnknowns>");
@@ -249,17 +262,15 @@ pub fn model_description(fmi: Fmi, kind: Kind, meta: &Meta, variables: &[Variabl
         depends.extend(initial_parameters(kind, v));
         // FMI 2 lists the dependencies by index, in increasing order.
         depends.sort_by_key(|&d| index_of(d));
-        unknown(&mut x, initial, v, &depends);
+        unknown(x, initial, v, &depends);
     }
     match fmi {
         Fmi::V2 => {
             let _ = writeln!(x, "    </InitialUnknowns>");
         }
         // FMI 3 names its event indicators here (FMI 2 counts them, in the wheels' order).
-        Fmi::V3 => indicators.iter().for_each(|v| unknown(&mut x, "<EventIndicator", v, &v.depends_on)),
+        Fmi::V3 => indicators.iter().for_each(|v| unknown(x, "<EventIndicator", v, &v.depends_on)),
     }
-    let _ = writeln!(x, "  </ModelStructure>\n</fmiModelDescription>");
-    x
 }
 
 fn attributes(v: &Variable) -> String {

@@ -323,13 +323,12 @@ impl ContactPoint {
         self.plain.cell(u, v)
     }
 
-    /// The C library's call-free path of `crgEvaluv2z`, and of `crgEvalxy2z` after its
-    /// search: the elevation for the common case only (inside an evenly spaced grid, no
+    /// A real-time call: the elevation at (u, v) for the common case only (inside an
+    /// evenly spaced grid held in memory or in a window of a road read in place, no
     /// smoothing zone), `None` for every other case, where [`ContactPoint::uv_to_z`] (or
-    /// [`ContactPoint::z_of_found`]) answers. Also asks for the grid a wheel moving on
-    /// will read next. Never panics and calls nothing, so the C entry point needs no
-    /// stack frame; not part of the supported Rust API.
-    #[doc(hidden)]
+    /// [`ContactPoint::z_of_found`]) answers with the same bits. Also asks for the grid
+    /// a wheel moving on will read next. Never panics, allocates or calls anything: the
+    /// C library's `crgEvaluv2z` starts with it.
     #[inline(always)]
     pub fn uv_to_z_plain(&mut self, u: f64, v: f64) -> Option<f64> {
         let cell = self.plain.cell(u, v)?;
@@ -352,12 +351,12 @@ impl ContactPoint {
         z
     }
 
-    /// [`ContactPoint::uv_to_z_plain`] for a road read in place whose point lies outside
-    /// the windows: a window moves to the tile of the point's cell (a present tile, pinned
-    /// now) and the common case answers. `None` for every other case, also where the tile must first be read from
-    /// the file ([`ContactPoint::uv_to_z`] and [`ContactPoint::z_of_found`] do that).
-    /// Nothing in it can panic or take a lock; not part of the supported Rust API.
-    #[doc(hidden)]
+    /// A real-time call: [`ContactPoint::uv_to_z_plain`] for a road read in place whose
+    /// point lies outside the windows: a window moves to the tile of the point's cell (a
+    /// present tile, pinned now) and the common case answers. `None` for every other
+    /// case, also where the tile must first be read from the file
+    /// ([`ContactPoint::uv_to_z`] and [`ContactPoint::z_of_found`] do that). Nothing in
+    /// it can panic or take a lock.
     #[inline(never)]
     pub fn uv_to_z_placed(&mut self, u: f64, v: f64) -> Option<f64> {
         let (iu, iv) = self.plain.road_cell(u, v)?.indices();
@@ -404,13 +403,11 @@ impl ContactPoint {
         Some(unsafe { self.plain.elevation(&terms, &cell) })
     }
 
-    /// The C library's call-free path of the x/y calls: (u, v) of (x, y) when the lean
-    /// search applies (a recent query lies within reach and the walk stays between the line's
-    /// ends), with the history updated as
-    /// [`ContactPoint::xy_to_uv`] updates it; `None`, with nothing changed, otherwise
-    /// (then [`ContactPoint::xy_to_uv_general`] answers). Never panics; not part of the
-    /// supported Rust API.
-    #[doc(hidden)]
+    /// A real-time call: (u, v) of (x, y) when the lean search applies (a recent query
+    /// lies within reach and the walk stays between the line's ends), with the history
+    /// updated as [`ContactPoint::xy_to_uv`] updates it; `None`, with nothing changed,
+    /// otherwise (then [`ContactPoint::xy_to_uv_general`] answers). Never panics; the C
+    /// library's x/y calls start with it.
     #[inline(always)]
     pub fn xy_to_uv_lean(&mut self, x: f64, y: f64) -> Option<(f64, f64)> {
         if x.is_nan() || y.is_nan() {
@@ -437,9 +434,7 @@ impl ContactPoint {
     }
 
     /// [`ContactPoint::xy_to_uv`] without trying the lean search first: for a caller
-    /// whose [`ContactPoint::xy_to_uv_lean`] just declined. Not part of the supported
-    /// Rust API.
-    #[doc(hidden)]
+    /// whose [`ContactPoint::xy_to_uv_lean`] just declined.
     pub fn xy_to_uv_general(&mut self, x: f64, y: f64) -> Result<(f64, f64)> {
         finite(x, y)?;
         let road = &*self.road;
@@ -473,9 +468,9 @@ impl ContactPoint {
     }
 
     /// The elevation [`ContactPoint::xy_to_z`] gives at the (u, v) its search found (no
-    /// check of u and v: the search's answer is taken as it is). Not part of the
-    /// supported Rust API.
-    #[doc(hidden)]
+    /// check of u and v: the search's answer is taken as it is), for a caller that
+    /// searched with [`ContactPoint::xy_to_uv_lean`] or [`ContactPoint::xy_to_uv`] and
+    /// needs the elevation there too.
     #[inline]
     pub fn z_of_found(&mut self, u: f64, v: f64) -> Result<f64> {
         match self.uv_to_z_plain(u, v) {

@@ -372,17 +372,7 @@ pub fn write_fmu(road: &Path, out: &Path, options: &FmuOptions) -> Result<FmuRep
     let file_name = road.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
     let identifier = identifier_of(&name);
     let variables = fmu.variables(options.fmi == Fmi::V3);
-    let description = match kind {
-        Kind::Crg => format!(
-            "OpenCRG road {file_name}: height, normal and friction under {}",
-            Count(options.wheels as usize, "wheel")
-        ),
-        Kind::Map => format!(
-            "OpenDRIVE map {file_name} with {}: height, normal and friction under {}",
-            Count(config.crg.len(), "CRG file"),
-            Count(options.wheels as usize, "wheel")
-        ),
-    };
+    let description = description_of(kind, &file_name, options.wheels as usize, config.crg.len());
     let meta = Meta {
         model_name: name,
         identifier: identifier.clone(),
@@ -395,35 +385,20 @@ pub fn write_fmu(road: &Path, out: &Path, options: &FmuOptions) -> Result<FmuRep
 
     // Written beside `out` under another name, then renamed onto it.
     let partial = out.with_extension("fmu.partial");
-    let written = (|| -> Result<()> {
-        let file = std::fs::File::create(&partial).map_err(|e| Error::writing(&partial, e))?;
-        let mut zip = zip::ZipWriter::new(std::io::BufWriter::new(file));
-        let io = |e: std::io::Error| Error::writing(&partial, e);
-        let zipped = |e: zip::result::ZipError| Error::writing(&partial, std::io::Error::other(e));
-        // A fixed time for every entry: the same road packed alike gives the same bytes.
-        let fixed = zip::write::SimpleFileOptions::default()
-            .compression_method(zip::CompressionMethod::Deflated)
-            .last_modified_time(zip::DateTime::default());
-        zip.start_file("modelDescription.xml", fixed).map_err(zipped)?;
-        zip.write_all(xml.as_bytes()).map_err(io)?;
-        for (entry, bytes) in entries.iter().zip(&contents) {
-            zip.start_file(format!("resources/{}", entry.inside), fixed).map_err(zipped)?;
-            zip.write_all(bytes).map_err(io)?;
-        }
-        zip.start_file(format!("resources/{}", config::FILE_NAME), fixed).map_err(zipped)?;
-        zip.write_all(config_text.as_bytes()).map_err(io)?;
-        for binary in &options.binaries {
-            let bytes = std::fs::read(&binary.file).map_err(|e| Error::reading(&binary.file, e))?;
-            let inside = format!(
-                "binaries/{}/{identifier}.{}",
-                binary.platform.folder(options.fmi),
-                binary.platform.extension()
-            );
-            zip.start_file(inside, fixed.unix_permissions(0o755)).map_err(zipped)?;
-            zip.write_all(&bytes).map_err(io)?;
-        }
-        zip.finish().map_err(zipped)?.flush().map_err(io)
-    })();
+    let mut files: Vec<(String, &[u8])> = vec![("modelDescription.xml".into(), xml.as_bytes())];
+    for (entry, bytes) in entries.iter().zip(&contents) {
+        files.push((format!("resources/{}", entry.inside), bytes));
+    }
+    files.push((format!("resources/{}", config::FILE_NAME), config_text.as_bytes()));
+    let binaries: Vec<(String, &Path)> = options
+        .binaries
+        .iter()
+        .map(|b| {
+            let folder = b.platform.folder(options.fmi);
+            (format!("binaries/{folder}/{identifier}.{}", b.platform.extension()), b.file.as_path())
+        })
+        .collect();
+    let written = zip_to(&partial, &files, &binaries);
     if let Err(e) = written.and_then(|()| std::fs::rename(&partial, out).map_err(|e| Error::writing(out, e))) {
         let _ = std::fs::remove_file(&partial);
         return Err(e);
@@ -436,6 +411,41 @@ pub fn write_fmu(road: &Path, out: &Path, options: &FmuOptions) -> Result<FmuRep
         platforms: options.binaries.iter().map(|b| b.platform).collect(),
         variables: variables.len(),
     })
+}
+
+/// The model description's one-line description of a road's or a map's FMU.
+fn description_of(kind: Kind, file_name: &str, wheels: usize, crg_files: usize) -> String {
+    match kind {
+        Kind::Crg => format!("OpenCRG road {file_name}: height, normal and friction under {}", Count(wheels, "wheel")),
+        Kind::Map => format!(
+            "OpenDRIVE map {file_name} with {}: height, normal and friction under {}",
+            Count(crg_files, "CRG file"),
+            Count(wheels, "wheel")
+        ),
+    }
+}
+
+/// Writes the zip at `partial`: `files` (name inside, bytes), then the `binaries` (name
+/// inside, file), executable.
+fn zip_to(partial: &Path, files: &[(String, &[u8])], binaries: &[(String, &Path)]) -> Result<()> {
+    let file = std::fs::File::create(partial).map_err(|e| Error::writing(partial, e))?;
+    let mut zip = zip::ZipWriter::new(std::io::BufWriter::new(file));
+    let io = |e: std::io::Error| Error::writing(partial, e);
+    let zipped = |e: zip::result::ZipError| Error::writing(partial, std::io::Error::other(e));
+    // A fixed time for every entry: the same road packed alike gives the same bytes.
+    let fixed = zip::write::SimpleFileOptions::default()
+        .compression_method(zip::CompressionMethod::Deflated)
+        .last_modified_time(zip::DateTime::default());
+    for (inside, bytes) in files {
+        zip.start_file(inside.as_str(), fixed).map_err(zipped)?;
+        zip.write_all(bytes).map_err(io)?;
+    }
+    for (inside, source) in binaries {
+        let bytes = std::fs::read(source).map_err(|e| Error::reading(source, e))?;
+        zip.start_file(inside.as_str(), fixed.unix_permissions(0o755)).map_err(zipped)?;
+        zip.write_all(&bytes).map_err(io)?;
+    }
+    zip.finish().map_err(zipped)?.flush().map_err(io)
 }
 
 #[cfg(test)]

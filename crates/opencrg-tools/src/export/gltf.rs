@@ -26,53 +26,7 @@ fn num(x: f64) -> String {
 /// (no triangle uses them) at the translation's origin.
 pub(crate) fn glb(mesh: &Mesh, out: &mut impl Write) -> io::Result<()> {
     let n = mesh.positions.len();
-    // The origin: the smallest coordinates of the vertices with a position.
-    let finite = mesh.positions.iter().filter(|p| p.iter().all(|c| c.is_finite())).map(|&p| y_up(p));
-    let origin = finite.fold([f64::INFINITY; 3], |m, p| [m[0].min(p[0]), m[1].min(p[1]), m[2].min(p[2])]);
-    let origin = origin.map(|c| if c.is_finite() { c } else { 0.0 });
-    let (mut lo, mut hi) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
-    let mut bin = Vec::with_capacity(n * 32 + mesh.triangles.len() * 12);
-    for p in &mesh.positions {
-        let q = if p.iter().all(|c| c.is_finite()) { y_up(*p) } else { origin };
-        for k in 0..3 {
-            let c = (q[k] - origin[k]) as f32;
-            lo[k] = lo[k].min(c);
-            hi[k] = hi[k].max(c);
-            bin.extend_from_slice(&c.to_le_bytes());
-        }
-    }
-    let normals_at = bin.len();
-    for nv in &mesh.normals {
-        for c in [nv[0], nv[2], -nv[1]] {
-            bin.extend_from_slice(&c.to_le_bytes());
-        }
-    }
-    let texcoords_at = bin.len();
-    for t in &mesh.texcoords {
-        for c in t {
-            bin.extend_from_slice(&c.to_le_bytes());
-        }
-    }
-    let indices_at = bin.len();
-    for t in &mesh.triangles {
-        for i in t {
-            bin.extend_from_slice(&i.to_le_bytes());
-        }
-    }
-    let mut values_at = Vec::new();
-    for v in &mesh.values {
-        values_at.push(bin.len());
-        for x in &v.values {
-            bin.extend_from_slice(&x.to_le_bytes());
-        }
-    }
-    let total = bin.len();
-    while bin.len() % 4 != 0 {
-        bin.push(0);
-    }
-    if n == 0 {
-        (lo, hi) = ([0.0; 3], [0.0; 3]);
-    }
+    let Buffer { bin, total, origin, lo, hi, normals_at, texcoords_at, indices_at, values_at } = buffer(mesh);
     let f32s = |v: [f32; 3]| format!("[{},{},{}]", num(v[0].into()), num(v[1].into()), num(v[2].into()));
     // The parts: the mesh's groups with triangles, or one of every triangle.
     let whole = [MeshGroup { name: String::new(), triangles: 0..mesh.triangles.len(), extras: String::new() }];
@@ -134,8 +88,84 @@ pub(crate) fn glb(mesh: &Mesh, out: &mut impl Write) -> io::Result<()> {
         views = views.join(","),
         accessors = accessors.join(","),
     );
+    write_container(out, json, &bin)
+}
+
+/// A mesh's binary buffer and where its parts lie in it.
+struct Buffer {
+    bin: Vec<u8>,
+    /// The byte length before the padding to 4 bytes.
+    total: usize,
+    /// The smallest coordinates of the vertices with a position (y up): the node's
+    /// translation, which the positions are relative to.
+    origin: [f64; 3],
+    /// The positions' bounds.
+    lo: [f32; 3],
+    hi: [f32; 3],
+    normals_at: usize,
+    texcoords_at: usize,
+    indices_at: usize,
+    values_at: Vec<usize>,
+}
+
+/// Lays out the positions (y up, relative to the origin), normals, texture coordinates,
+/// triangles and values of `mesh` in one little-endian buffer.
+fn buffer(mesh: &Mesh) -> Buffer {
+    let n = mesh.positions.len();
+    // The origin: the smallest coordinates of the vertices with a position.
+    let finite = mesh.positions.iter().filter(|p| p.iter().all(|c| c.is_finite())).map(|&p| y_up(p));
+    let origin = finite.fold([f64::INFINITY; 3], |m, p| [m[0].min(p[0]), m[1].min(p[1]), m[2].min(p[2])]);
+    let origin = origin.map(|c| if c.is_finite() { c } else { 0.0 });
+    let (mut lo, mut hi) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
+    let mut bin = Vec::with_capacity(n * 32 + mesh.triangles.len() * 12);
+    for p in &mesh.positions {
+        let q = if p.iter().all(|c| c.is_finite()) { y_up(*p) } else { origin };
+        for k in 0..3 {
+            let c = (q[k] - origin[k]) as f32;
+            lo[k] = lo[k].min(c);
+            hi[k] = hi[k].max(c);
+            bin.extend_from_slice(&c.to_le_bytes());
+        }
+    }
+    let normals_at = bin.len();
+    for nv in &mesh.normals {
+        for c in [nv[0], nv[2], -nv[1]] {
+            bin.extend_from_slice(&c.to_le_bytes());
+        }
+    }
+    let texcoords_at = bin.len();
+    for t in &mesh.texcoords {
+        for c in t {
+            bin.extend_from_slice(&c.to_le_bytes());
+        }
+    }
+    let indices_at = bin.len();
+    for t in &mesh.triangles {
+        for i in t {
+            bin.extend_from_slice(&i.to_le_bytes());
+        }
+    }
+    let mut values_at = Vec::new();
+    for v in &mesh.values {
+        values_at.push(bin.len());
+        for x in &v.values {
+            bin.extend_from_slice(&x.to_le_bytes());
+        }
+    }
+    let total = bin.len();
+    while bin.len() % 4 != 0 {
+        bin.push(0);
+    }
+    if n == 0 {
+        (lo, hi) = ([0.0; 3], [0.0; 3]);
+    }
+    Buffer { bin, total, origin, lo, hi, normals_at, texcoords_at, indices_at, values_at }
+}
+
+/// Writes the binary glTF container: the header, the JSON chunk, the binary chunk.
+fn write_container(out: &mut impl Write, json: String, bin: &[u8]) -> io::Result<()> {
     let mut json = json.into_bytes();
-    while json.len() % 4 != 0 {
+    while !json.len().is_multiple_of(4) {
         json.push(b' ');
     }
     let length = 12 + 8 + json.len() + 8 + bin.len();
@@ -148,5 +178,5 @@ pub(crate) fn glb(mesh: &Mesh, out: &mut impl Write) -> io::Result<()> {
     out.write_all(&json)?;
     out.write_all(&(bin.len() as u32).to_le_bytes())?;
     out.write_all(b"BIN\0")?;
-    out.write_all(&bin)
+    out.write_all(bin)
 }

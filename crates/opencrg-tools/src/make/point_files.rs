@@ -143,33 +143,7 @@ fn read_ply(path: &Path, bytes: &[u8]) -> Result<Points> {
         .ok_or_else(|| bad(path, 0, "header", "no end_header line"))?;
     let body_start = bytes[end..].iter().position(|&b| b == b'\n').map_or(bytes.len(), |p| end + p + 1);
     let header = String::from_utf8_lossy(&bytes[..end]);
-    let mut format = "";
-    // Elements: name, count, properties (type, name; lists refused).
-    let mut elements: Vec<PlyElement> = Vec::new();
-    for (k, line) in header.lines().enumerate() {
-        let w: Vec<&str> = line.split_whitespace().collect();
-        match w.as_slice() {
-            ["format", f, ..] => format = f,
-            ["element", name, n] => {
-                let n = n.parse().map_err(|_| bad(path, k + 1, "element", format!("count '{n}' is not a number")))?;
-                elements.push(PlyElement { name: name.to_string(), count: n, props: Vec::new(), lists: false });
-            }
-            ["property", "list", ..] => {
-                if let Some(e) = elements.last_mut() {
-                    e.lists = true;
-                }
-            }
-            ["property", kind, name] => {
-                if ply_size(kind).is_none() {
-                    return Err(bad(path, k + 1, "property", format!("unknown type '{kind}'")));
-                }
-                if let Some(e) = elements.last_mut() {
-                    e.props.push((kind.to_string(), name.to_string()));
-                }
-            }
-            _ => {}
-        }
-    }
+    let (format, elements) = ply_header(path, &header)?;
     let little = match format {
         "ascii" => None,
         "binary_little_endian" => Some(true),
@@ -248,4 +222,37 @@ fn read_ply(path: &Path, bytes: &[u8]) -> Result<Points> {
         points.z = Some(z);
     }
     Ok(points)
+}
+
+/// A PLY header's format and elements (name, count, properties: type and name; whether
+/// it has list properties).
+fn ply_header<'a>(path: &Path, header: &'a str) -> Result<(&'a str, Vec<PlyElement>)> {
+    let mut format = "";
+    // Elements: name, count, properties (type, name; lists refused).
+    let mut elements: Vec<PlyElement> = Vec::new();
+    for (k, line) in header.lines().enumerate() {
+        let w: Vec<&str> = line.split_whitespace().collect();
+        match w.as_slice() {
+            ["format", f, ..] => format = f,
+            ["element", name, n] => {
+                let n = n.parse().map_err(|_| bad(path, k + 1, "element", format!("count '{n}' is not a number")))?;
+                elements.push(PlyElement { name: name.to_string(), count: n, props: Vec::new(), lists: false });
+            }
+            ["property", "list", ..] => {
+                if let Some(e) = elements.last_mut() {
+                    e.lists = true;
+                }
+            }
+            ["property", kind, name] => {
+                if ply_size(kind).is_none() {
+                    return Err(bad(path, k + 1, "property", format!("unknown type '{kind}'")));
+                }
+                if let Some(e) = elements.last_mut() {
+                    e.props.push((kind.to_string(), name.to_string()));
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok((format, elements))
 }
