@@ -112,7 +112,7 @@ impl Instance {
             compat: variables::COMPAT_DEFAULT.into(),
             options: Parameter::all(kind)
                 .into_iter()
-                .filter_map(|p| match (p, fmu.ground.parameter_start(p)) {
+                .filter_map(|p| match (p, fmu.terrain.parameter_start(p)) {
                     (Parameter::Option(id), Start::Integer(i)) => Some((id, Value::Int(i))),
                     (Parameter::Option(id), Start::Real(d)) => Some((id, Value::Double(d))),
                     _ => None,
@@ -460,7 +460,7 @@ impl Instance {
     /// option set since kept.
     fn take_road_starts(&mut self) {
         for (k, start) in self.starts.options.iter_mut().enumerate() {
-            let now = match self.fmu.ground.parameter_start(Parameter::Option(start.0)) {
+            let now = match self.fmu.terrain.parameter_start(Parameter::Option(start.0)) {
                 Start::Integer(i) => Value::Int(i),
                 Start::Real(d) => Value::Double(d),
                 _ => continue,

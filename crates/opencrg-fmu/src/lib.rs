@@ -7,7 +7,7 @@
 //!   curvature), the parameters, their value references.
 //! - [`description`]: the model description.
 //! - [`config`]: the file in `resources/` that tells the binary what to load.
-//! - [`Ground`] and [`Wheels`]: the road loaded, and the answers under each wheel.
+//! - [`Terrain`] and [`Wheels`]: the road loaded, and the answers under each wheel.
 //!
 //! ```no_run
 //! use opencrg_fmu::{Fmu, Quantity};
@@ -22,12 +22,12 @@
 
 pub mod config;
 pub mod description;
-mod ground;
+mod terrain;
 pub mod variables;
 
 pub use config::Config;
 pub use description::{model_description, Fmi, Meta};
-pub use ground::{compat_named, Ground, Wheels};
+pub use terrain::{compat_named, Terrain, Wheels};
 pub use variables::{Kind, Parameter, Quantity, Start, Type, Variable};
 
 use opencrg_core::settings::Value;
@@ -39,7 +39,7 @@ pub struct Fmu {
     /// What the resources hold.
     pub config: Config,
     /// The road, loaded.
-    pub ground: Ground,
+    pub terrain: Terrain,
     resources: PathBuf,
     compat: Compat,
     /// The `roadFile` parameter: the CRG file read instead of the FMU's own road (empty:
@@ -60,13 +60,13 @@ impl Fmu {
         let text = std::fs::read_to_string(&file).map_err(|e| Error::reading(&file, e))?;
         let config = Config::parse(&text, &file)?;
         let compat = Compat::default();
-        let (ground, missing) = match load_ground(resources, &config, compat) {
-            Ok(ground) => (ground, None),
-            Err(e @ Error::NotFound { .. }) if config.outside => (Ground::placeholder()?, Some(e.to_string())),
+        let (terrain, missing) = match load_terrain(resources, &config, compat) {
+            Ok(terrain) => (terrain, None),
+            Err(e @ Error::NotFound { .. }) if config.outside => (Terrain::placeholder()?, Some(e.to_string())),
             Err(e) => return Err(e),
         };
         let road_file = road_file_start(&config);
-        Ok(Fmu { config, ground, resources: resources.to_path_buf(), compat, road_file, missing })
+        Ok(Fmu { config, terrain, resources: resources.to_path_buf(), compat, road_file, missing })
     }
 
     /// The behaviour profile the road was loaded with.
@@ -78,7 +78,7 @@ impl Fmu {
     /// the current one).
     pub fn set_compat(&mut self, compat: Compat) -> Result<()> {
         if compat != self.compat && self.config.kind == Kind::Crg && self.missing.is_none() {
-            self.ground = Ground::load_crg(&self.road_path(), compat)?;
+            self.terrain = Terrain::load_crg(&self.road_path(), compat)?;
         }
         self.compat = compat;
         Ok(())
@@ -99,7 +99,7 @@ impl Fmu {
     /// again); refused, the road kept: a file that cannot be read or is refused.
     pub fn set_road_file(&mut self, file: &str) -> Result<()> {
         let file = file.trim();
-        self.ground = Ground::load_crg(&self.path_of(file), self.compat)?;
+        self.terrain = Terrain::load_crg(&self.path_of(file), self.compat)?;
         self.road_file = file.to_string();
         self.missing = None;
         Ok(())
@@ -127,9 +127,9 @@ impl Fmu {
     /// A map's roads' OpenDRIVE ids in the file's order (none for a CRG file): what
     /// `wheel[i].road`'s values name.
     pub fn road_ids(&self) -> Vec<String> {
-        match &self.ground {
-            Ground::Map(surface) => surface.map().roads.iter().map(|r| r.id.clone()).collect(),
-            Ground::Crg(_) => Vec::new(),
+        match &self.terrain {
+            Terrain::Map(surface) => surface.map().roads.iter().map(|r| r.id.clone()).collect(),
+            Terrain::Crg(_) => Vec::new(),
         }
     }
 
@@ -137,13 +137,13 @@ impl Fmu {
     pub fn variables(&self, with_time: bool) -> Vec<Variable> {
         let start = self.road_file_start();
         variables::variables(
-            self.ground.kind(),
+            self.terrain.kind(),
             self.config.wheels,
             with_time,
-            self.ground.start_point(),
+            self.terrain.start_point(),
             |p| match p {
                 variables::Parameter::RoadFile => variables::Start::String(start.clone()),
-                p => self.ground.parameter_start(p),
+                p => self.terrain.parameter_start(p),
             },
         )
     }
@@ -151,7 +151,7 @@ impl Fmu {
     /// The wheels at their start point, a CRG file's contact points with the options
     /// `changed`.
     pub fn wheels(&self, changed: &[(u32, Value)]) -> Result<Wheels> {
-        Wheels::new(&self.ground, self.config.wheels as usize, self.ground.start_point(), changed)
+        Wheels::new(&self.terrain, self.config.wheels as usize, self.terrain.start_point(), changed)
     }
 }
 
@@ -166,14 +166,14 @@ fn road_file_start(config: &Config) -> String {
 }
 
 /// Loads the road `config` names under `resources`.
-fn load_ground(resources: &Path, config: &Config, compat: Compat) -> Result<Ground> {
+fn load_terrain(resources: &Path, config: &Config, compat: Compat) -> Result<Terrain> {
     let road = config.road_path(resources);
     match config.kind {
-        Kind::Crg => Ground::load_crg(&road, compat),
+        Kind::Crg => Terrain::load_crg(&road, compat),
         Kind::Map => {
             let moved: Vec<(String, PathBuf)> =
                 config.crg.iter().map(|(file, path)| (file.clone(), Config::resolve(resources, path))).collect();
-            Ground::load_map(&road, &moved)
+            Terrain::load_map(&road, &moved)
         }
     }
 }

@@ -5,7 +5,7 @@
 //! it; on a map, what a probe of its own answers.
 
 use opencrg_core::{Compat, ContactPoint};
-use opencrg_fmu::{Ground, Quantity, Wheels};
+use opencrg_fmu::{Quantity, Terrain, Wheels};
 use std::path::{Path, PathBuf};
 
 fn demo(name: &str) -> PathBuf {
@@ -32,9 +32,9 @@ fn same(a: f64, b: f64) -> bool {
 
 /// One CRG file: the first wheel against a contact point making the C API's calls.
 fn crg_agrees(file: &Path) -> usize {
-    let ground = Ground::load_crg(file, Compat::default()).unwrap();
-    let Ground::Crg(road) = &ground else { unreachable!() };
-    let mut wheels = Wheels::new(&ground, 2, (0.0, 0.0), &[]).unwrap();
+    let terrain = Terrain::load_crg(file, Compat::default()).unwrap();
+    let Terrain::Crg(road) = &terrain else { unreachable!() };
+    let mut wheels = Wheels::new(&terrain, 2, (0.0, 0.0), &[]).unwrap();
     let mut cp = ContactPoint::new(road.clone());
     let points = path(road, 400);
     let mut on = 0;
@@ -76,7 +76,7 @@ fn shared_samples_answer_as_the_c_api() {
         files.sort();
         for file in files.iter().filter(|f| f.extension().is_some_and(|e| e == "crg")) {
             // Files the C API's check refuses are refused by the FMU too (and tested so).
-            if Ground::load_crg(file, Compat::default()).is_err() {
+            if Terrain::load_crg(file, Compat::default()).is_err() {
                 continue;
             }
             checked += crg_agrees(file);
@@ -87,8 +87,8 @@ fn shared_samples_answer_as_the_c_api() {
 
 #[test]
 fn off_the_road_and_bad_input_give_the_documented_values() {
-    let ground = Ground::load_map(&demo("demo_map.xodr"), &[]).unwrap();
-    let mut wheels = Wheels::new(&ground, 1, (0.0, 0.0), &[]).unwrap();
+    let terrain = Terrain::load_map(&demo("demo_map.xodr"), &[]).unwrap();
+    let mut wheels = Wheels::new(&terrain, 1, (0.0, 0.0), &[]).unwrap();
     for (x, y) in [(1e6, 1e6), (f64::NAN, 0.0), (0.0, f64::INFINITY)] {
         wheels.set(0, Quantity::X, x);
         wheels.set(0, Quantity::Y, y);
@@ -99,7 +99,7 @@ fn off_the_road_and_bad_input_give_the_documented_values() {
         assert_eq!(values, [0.0, 0.7, 0.0, 0.0, 1.0, 0.0, 0.0], "({x}, {y})");
         assert_eq!((wheels.integer(0, Quantity::Road), wheels.integer(0, Quantity::Lane)), (-1, 0));
     }
-    let crg = Ground::load_crg(&demo("demo_road.crg"), Compat::default()).unwrap();
+    let crg = Terrain::load_crg(&demo("demo_road.crg"), Compat::default()).unwrap();
     let mut wheels =
         Wheels::new(&crg, 1, (0.0, 0.0), &[(opencrg_core::settings::opt::BORDER_MODE_U, opencrg_core::Value::Int(0))])
             .unwrap();

@@ -34,6 +34,7 @@ mod perf_stat;
 // What they stand on.
 mod barrier;
 mod c_path;
+mod compat;
 mod constants;
 mod entry;
 mod lock;
@@ -41,7 +42,6 @@ mod msg;
 mod msg_entry;
 mod on_load;
 mod owner;
-mod profile;
 mod ptr;
 mod registry;
 mod report;

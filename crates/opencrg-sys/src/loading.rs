@@ -3,7 +3,7 @@
 
 use crate::entry::answer;
 use crate::ptr::in_str;
-use crate::{c_path, msg, profile, registry, report};
+use crate::{c_path, compat, msg, registry, report};
 use opencrg_core::Road;
 use std::ffi::{c_char, c_int};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -24,7 +24,7 @@ pub unsafe extern "C" fn crgLoaderReadFile(filename: *const c_char) -> c_int {
             return 0;
         };
         let path = c_path::path_of(filename);
-        let compat = match profile::compat() {
+        let compat = match compat::from_environment() {
             Ok(compat) => compat,
             Err(e) => {
                 call.fatal(&format!("{}: {e}; file <{}> not read", call.name(), path.display()));

@@ -71,7 +71,7 @@ pub use make::compare::{compare, Comparison};
 pub use make::cut::cut;
 pub use make::filter::{filter, Filter};
 pub use make::flip::flip;
-pub use make::generate::{generate, Layout, Points, Surface};
+pub use make::generate::{generate, ElevationFn, Layout, Points};
 #[cfg(feature = "point-clouds")]
 pub use make::import::{import, Import};
 pub use make::nodes::Progress;

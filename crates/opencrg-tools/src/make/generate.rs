@@ -48,7 +48,7 @@ pub struct Layout {
 
 /// The elevation of a road being made relative to its reference line, as a function of
 /// (u, v).
-pub type Surface<'a> = &'a (dyn Fn(f64, f64) -> f64 + Sync);
+pub type ElevationFn<'a> = &'a (dyn Fn(f64, f64) -> f64 + Sync);
 
 /// A road whose reference line passes through `line`'s points in order along a smooth
 /// curve (a cubic spline over the chord length: heading and curvature are
@@ -56,7 +56,7 @@ pub type Surface<'a> = &'a (dyn Fn(f64, f64) -> f64 + Sync);
 /// the line climbs through them (a slope channel). The grid is `surface` (flat without).
 /// Refused: fewer than two points, a width or increment that is not a positive number, a
 /// grid beyond `budget`.
-pub fn generate(line: &Points, layout: Layout, surface: Option<Surface>, budget: &Budget) -> Result<Road> {
+pub fn generate(line: &Points, layout: Layout, surface: Option<ElevationFn>, budget: &Budget) -> Result<Road> {
     let mut d = along(line, layout, budget)?;
     let (nu, nv) = (d.nu(), d.nv());
     d.z = filled(nu * nv, 0.0, "the new road's grid")?;

@@ -13,7 +13,7 @@ static PROFILE: OnceLock<Result<Compat, UnknownCompat>> = OnceLock::new();
 /// `OPENCRG_COMPAT` names the releases; an error naming the accepted values when it
 /// holds anything else (every load is then refused, rather than giving numbers of
 /// the wrong profile).
-pub(crate) fn compat() -> Result<Compat, String> {
+pub(crate) fn from_environment() -> Result<Compat, String> {
     PROFILE
         .get_or_init(|| match std::env::var_os(VARIABLE) {
             None => Ok(Compat::default()),

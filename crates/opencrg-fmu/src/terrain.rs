@@ -18,33 +18,33 @@ use std::sync::Arc;
 
 /// A loaded road: a CRG file ready to evaluate, or a map with its CRG files.
 #[derive(Clone)]
-pub enum Ground {
+pub enum Terrain {
     /// A CRG file, checked and its modifiers applied.
     Crg(Arc<opencrg_core::Road>),
     /// A map.
     Map(Arc<Surface>),
 }
 
-impl Ground {
+impl Terrain {
     /// Reads the CRG file in `path` as the C API's programs prepare it: read, checked
     /// (refused where the check fails) and its modifiers applied.
-    pub fn load_crg(path: &Path, compat: Compat) -> Result<Ground> {
+    pub fn load_crg(path: &Path, compat: Compat) -> Result<Terrain> {
         let mut road = opencrg_core::Road::load_with(path, compat)?;
         road.check().map_err(|e| Error::Check(format!("{}: {e}", path.display())))?;
         road.apply_modifiers();
-        Ok(Ground::Crg(Arc::new(road)))
+        Ok(Terrain::Crg(Arc::new(road)))
     }
 
     /// A flat road of four nodes: what an FMU answers on while the CRG file it names
     /// outside itself is missing (it refuses to initialize meanwhile).
-    pub fn placeholder() -> Result<Ground> {
+    pub fn placeholder() -> Result<Terrain> {
         let road = opencrg_core::synth::RoadSpec::straight(1.0, 1.0, 1.0, 1.0).build()?;
-        Ok(Ground::Crg(Arc::new(road)))
+        Ok(Terrain::Crg(Arc::new(road)))
     }
 
     /// Reads the map in `path` and the CRG files its records name; a record whose file
     /// (as written) is in `moved` reads the path given there instead.
-    pub fn load_map(path: &Path, moved: &[(String, PathBuf)]) -> Result<Ground> {
+    pub fn load_map(path: &Path, moved: &[(String, PathBuf)]) -> Result<Terrain> {
         let mut map = Map::load(path)?;
         let records = map.roads.iter_mut().flat_map(|r| &mut r.crg);
         for record in records.chain(map.junctions.iter_mut().flat_map(|j| &mut j.crg)) {
@@ -52,14 +52,14 @@ impl Ground {
                 record.path = to.clone();
             }
         }
-        Ok(Ground::Map(Arc::new(Surface::new(map)?)))
+        Ok(Terrain::Map(Arc::new(Surface::new(map)?)))
     }
 
     /// A CRG file or a map.
     pub fn kind(&self) -> Kind {
         match self {
-            Ground::Crg(_) => Kind::Crg,
-            Ground::Map(_) => Kind::Map,
+            Terrain::Crg(_) => Kind::Crg,
+            Terrain::Map(_) => Kind::Map,
         }
     }
 
@@ -68,12 +68,12 @@ impl Ground {
     /// start (each the middle of a shorter road).
     pub fn start_point(&self) -> (f64, f64) {
         match self {
-            Ground::Crg(road) => {
+            Terrain::Crg(road) => {
                 let ((u0, u1), (v0, v1)) = (road.u_range(), road.v_range());
                 let cp = ContactPoint::new(road.clone());
                 cp.uv_to_xy(u0 + (0.5 * (u1 - u0)).min(1.0), 0f64.clamp(v0, v1)).unwrap_or((0.0, 0.0))
             }
-            Ground::Map(surface) => match surface.map().roads.first() {
+            Terrain::Map(surface) => match surface.map().roads.first() {
                 Some(road) => {
                     let p = road.reference((0.5 * road.length).min(1.0));
                     (p.x, p.y)
@@ -91,8 +91,8 @@ impl Ground {
             Parameter::RoadFile => Start::String(String::new()),
             Parameter::Option(id) => {
                 let value = match self {
-                    Ground::Crg(road) => road.options().get(id),
-                    Ground::Map(_) => None,
+                    Terrain::Crg(road) => road.options().get(id),
+                    Terrain::Map(_) => None,
                 };
                 match value.unwrap_or_else(|| unset_value(id)) {
                     Value::Int(i) => Start::Integer(i),
@@ -161,14 +161,14 @@ pub struct Wheels {
 const UP: [f64; 3] = [0.0, 0.0, 1.0];
 
 impl Wheels {
-    /// `count` wheels at `start` on `ground`, a CRG file's contact points with the
+    /// `count` wheels at `start` on `terrain`, a CRG file's contact points with the
     /// options `changed` (identifier and value; a value that behaves as unset removes
     /// the option). Refused: an option value the C API refuses, named.
-    pub fn new(ground: &Ground, count: usize, start: (f64, f64), changed: &[(u32, Value)]) -> Result<Wheels> {
+    pub fn new(terrain: &Terrain, count: usize, start: (f64, f64), changed: &[(u32, Value)]) -> Result<Wheels> {
         let mut wheels = Vec::with_capacity(count);
         for _ in 0..count {
-            let evaluator = match ground {
-                Ground::Crg(road) => {
+            let evaluator = match terrain {
+                Terrain::Crg(road) => {
                     let mut cp = ContactPoint::new(road.clone());
                     for &(id, value) in changed {
                         let removes = value == unset_value(id)
@@ -182,7 +182,7 @@ impl Wheels {
                     }
                     Evaluator::Crg(cp)
                 }
-                Ground::Map(surface) => Evaluator::Map(surface.probe(), surface.probe()),
+                Terrain::Map(surface) => Evaluator::Map(surface.probe(), surface.probe()),
             };
             wheels.push(Wheel {
                 at: [start.0, start.1],
@@ -191,9 +191,9 @@ impl Wheels {
                 latched: (false, -1, 0),
             });
         }
-        let ranges = match ground {
-            Ground::Crg(road) => Some((road.u_range(), road.v_range())),
-            Ground::Map(_) => None,
+        let ranges = match terrain {
+            Terrain::Crg(road) => Some((road.u_range(), road.v_range())),
+            Terrain::Map(_) => None,
         };
         Ok(Wheels { wheels, ranges })
     }
