@@ -210,17 +210,18 @@ pub enum Parameter {
     Option(u32),
 }
 
-/// The contact point options a CRG file's FMU offers as parameters, by their
-/// `$ROAD_CRG_OPTS` keyword (the curvature mode, which has none, by the C constant's).
-const OPTIONS: [(u32, &str); 8] = [
-    (opt::BORDER_MODE_U, "BORDER_MODE_U"),
-    (opt::BORDER_MODE_V, "BORDER_MODE_V"),
-    (opt::BORDER_OFFSET_U, "BORDER_OFFSET_U"),
-    (opt::BORDER_OFFSET_V, "BORDER_OFFSET_V"),
-    (opt::SMOOTH_U_BEGIN, "BORDER_SMOOTH_UBEG"),
-    (opt::SMOOTH_U_END, "BORDER_SMOOTH_UEND"),
-    (opt::REFLINE_CONTINUE, "REFLINE_CONTINUATION"),
-    (opt::CURV_MODE, "CURV_MODE"),
+/// The contact point options a CRG file's FMU offers as parameters (named by the
+/// settings table's code name: the `$ROAD_CRG_OPTS` keyword, or for the curvature mode,
+/// which has none, the C constant's).
+const OPTIONS: [u32; 8] = [
+    opt::BORDER_MODE_U,
+    opt::BORDER_MODE_V,
+    opt::BORDER_OFFSET_U,
+    opt::BORDER_OFFSET_V,
+    opt::SMOOTH_U_BEGIN,
+    opt::SMOOTH_U_END,
+    opt::REFLINE_CONTINUE,
+    opt::CURV_MODE,
 ];
 
 /// The friction answered where the road gives none, unless the parameter says otherwise.
@@ -236,7 +237,7 @@ impl Parameter {
         if kind == Kind::Crg {
             all.push(Parameter::Compat);
             all.push(Parameter::RoadFile);
-            let mut ids: Vec<u32> = OPTIONS.iter().map(|&(id, _)| id).collect();
+            let mut ids = OPTIONS.to_vec();
             ids.sort_unstable();
             all.extend(ids.into_iter().map(Parameter::Option));
         }
@@ -265,8 +266,8 @@ impl Parameter {
             Parameter::Compat => "compat".into(),
             Parameter::RoadFile => "roadFile".into(),
             Parameter::Option(id) => {
-                let keyword = OPTIONS.iter().find(|o| o.0 == id).map_or("unknown", |o| o.1);
-                format!("options.{keyword}")
+                let name = settings::info(id).map_or_else(|| "unknown".into(), |s| s.code_name());
+                format!("options.{name}")
             }
         }
     }
@@ -460,5 +461,7 @@ mod tests {
         assert_eq!(Parameter::Option(opt::BORDER_MODE_U).ty(), Type::Integer);
         assert_eq!(Parameter::Option(opt::BORDER_OFFSET_V).ty(), Type::Real);
         assert_eq!(Parameter::Option(opt::SMOOTH_U_END).name(), "options.BORDER_SMOOTH_UEND");
+        assert_eq!(Parameter::Option(opt::CURV_MODE).name(), "options.CURV_MODE");
+        assert_eq!(Parameter::Option(opt::REFLINE_CONTINUE).name(), "options.REFLINE_CONTINUATION");
     }
 }
