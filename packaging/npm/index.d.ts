@@ -108,6 +108,8 @@ export class OdrMap {
   private constructor();
   /** Reads a map held in memory with its CRG files (`{name: bytes}`). */
   static fromBytes(bytes: Uint8Array, files?: Record<string, Uint8Array>, name?: string): OdrMap;
+  /** The CRG files a map names (each once, as its records write them). */
+  static crgFilesOf(bytes: Uint8Array, name?: string): string[];
   ground<T extends Coordinates>(x: T, y: Like<T>): Ground<T>;
   normal<T extends Coordinates>(x: T, y: Like<T>): [Answer<T>, Answer<T>, Answer<T>];
   stToXyz<T extends Coordinates>(road: string, s: T, t: Like<T>): [Answer<T>, Answer<T>, Answer<T>];
@@ -126,8 +128,22 @@ export class OdrMap {
  * them: each call's name and the names of the values it takes and gives per point. */
 export function evaluations(): Array<{ name: string; inputs: string[]; outputs: string[] }>;
 
-/** OpenDRIVE maps. */
-export const odr: { Map: typeof OdrMap };
+/** OpenDRIVE maps, and the CRG files a map names (to fetch them before reading it). */
+export const odr: { Map: typeof OdrMap; crgFilesOf: typeof OdrMap.crgFilesOf };
+
+/** The drawing rules of the command's figures, which the web page follows too. */
+export const drawing: {
+  /** The colours of values in 0..1 (clamped): red, green, blue bytes for each. */
+  elevationColours(t: Float64Array): Uint8Array;
+  /** At most `atMost` ticks over [a, b] at the smallest round step (1, 2, 5 x 10^k). */
+  ticks(a: number, b: number, atMost: number): Float64Array;
+  /** A tick's label: at most six decimals, no trailing zeros. */
+  tickLabel(v: number): string;
+  /** A power of ten's label: 10 with a superscript exponent (plain from 0.001 to 1000). */
+  decadeLabel(v: number): string;
+  /** The tracks' colours in turn, and the grey of reference lines, as CSS colours. */
+  figureColours(): { tracks: string[]; reference: string };
+};
 
 /** The ISO 8608 road classes roughness is classified by: the reference spatial frequency
  * n0 (cycles/m), the limits of Gd(n0) between the classes (m³), the classes' letters. */

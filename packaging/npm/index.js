@@ -1,7 +1,19 @@
 // The opencrg npm package: OpenCRG roads and OpenDRIVE maps in WebAssembly. The module
 // loads its .wasm itself (in Node from its file, in browsers by fetch), so a plain
 // `import` is all it takes.
-import init, { initSync, ContactPoint, OdrMap, Road, evaluations, iso8608Classes } from './opencrg.js';
+import init, {
+  initSync,
+  ContactPoint,
+  OdrMap,
+  Road,
+  decadeLabel,
+  elevationColours,
+  evaluations,
+  figureColours,
+  iso8608Classes,
+  tickLabel,
+  ticks,
+} from './opencrg.js';
 
 const wasm = new URL('./opencrg_bg.wasm', import.meta.url);
 if (typeof process === 'object' && process.versions && process.versions.node) {
@@ -63,4 +75,6 @@ export const OutOfRangeError = errorClass('OutOfRangeError');
 
 export { ContactPoint, Road, evaluations, iso8608Classes };
 /** OpenDRIVE maps with CRG surfaces. */
-export const odr = { Map: OdrMap };
+export const odr = { Map: OdrMap, crgFilesOf: OdrMap.crgFilesOf };
+/** The drawing rules of the command's figures: colours, ticks and their labels. */
+export const drawing = { elevationColours, ticks, tickLabel, decadeLabel, figureColours };

@@ -3,7 +3,7 @@
 // coloured by height, and reads the surface where it is clicked. `?road=URL&probe=X,Y`
 // opens a road or map by URL (a map's CRG files relative to it) and writes the answer at
 // x/y into #probe: "z u v" for a CRG file, "z friction road s t" for a map.
-import { ContactPoint, Road, iso8608Classes, odr } from './index.js';
+import { ContactPoint, Road, drawing, iso8608Classes, odr } from './index.js';
 
 const $ = (id) => document.getElementById(id);
 let shown = null; // { kind: 'road', road, cp } or { kind: 'map', map }; the view's frame
@@ -95,13 +95,10 @@ function heights(x, y) {
   return z.map((h, i) => (u[i] >= u0 && u[i] <= u1 && v[i] >= v0 && v[i] <= v1 ? h : NaN));
 }
 
-function colour(t) {
-  // From blue over green and yellow to red.
-  const stops = [[49, 54, 149], [69, 117, 180], [116, 173, 209], [171, 217, 233], [254, 224, 144], [253, 174, 97], [244, 109, 67], [165, 0, 38]];
-  const f = Math.min(Math.max(t, 0), 1) * (stops.length - 1);
-  const i = Math.min(Math.floor(f), stops.length - 2);
-  const w = f - i;
-  return stops[i].map((c, k) => Math.round(c + w * (stops[i + 1][k] - c)));
+/** The colours of values `t` in 0..1 by the command's elevation colours: [r, g, b]s. */
+function colours(t) {
+  const rgb = drawing.elevationColours(Float64Array.from(t));
+  return Array.from({ length: t.length }, (_, i) => [rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2]]);
 }
 
 function draw() {
@@ -113,7 +110,8 @@ function draw() {
   const m = Math.max((x1 - x0) / pw, (y1 - y0) / ph);
   [x1, y1] = [x0 + m * pw, y0 + m * ph];
   shown.frame = { x0, y1, m, left, top: 10, pw, ph };
-  const step = 2;
+  // One point a pixel, as `opencrg render` draws its top view.
+  const step = 1;
   const [nx, ny] = [Math.ceil(pw / step), Math.ceil(ph / step)];
   const x = new Float64Array(nx * ny);
   const y = new Float64Array(nx * ny);
@@ -132,12 +130,14 @@ function draw() {
   g.fillStyle = '#fff';
   g.fillRect(0, 0, W, H);
   const image = g.createImageData(pw, ph);
+  const rgb = drawing.elevationColours(z.map((h) => (h - lo) / (hi - lo || 1)));
   for (let r = 0; r < ny; r++) {
     for (let c = 0; c < nx; c++) {
       const h = z[r * nx + c];
       if (!Number.isFinite(h)) continue;
       const cc = r % 2 ? nx - 1 - c : c;
-      const [R, G, B] = colour((h - lo) / (hi - lo || 1));
+      const k = 3 * (r * nx + c);
+      const [R, G, B] = [rgb[k], rgb[k + 1], rgb[k + 2]];
       for (let dy = 0; dy < step; dy++) {
         for (let dx = 0; dx < step; dx++) {
           const [px, py] = [cc * step + dx, r * step + dy];
@@ -153,21 +153,12 @@ function draw() {
   bar(g, lo, hi, left + pw + 20, 10, ph);
 }
 
-function ticks(a, b) {
-  const raw = (b - a) / 6;
-  const p = 10 ** Math.floor(Math.log10(raw));
-  const d = [1, 2, 5, 10].map((k) => k * p).find((k) => k >= raw);
-  const out = [];
-  for (let t = Math.ceil(a / d) * d; t <= b; t += d) out.push(t);
-  return out;
-}
-
 /** Linear axes: ticks at round steps, labelled with their values. */
-const LINEAR = { ticks, label: (t) => `${+t.toFixed(6)}` };
+const LINEAR = { ticks: (a, b) => Array.from(drawing.ticks(a, b, 7)), label: drawing.tickLabel };
 /** Axes over log10 of the values: a tick at each decade. */
 const DECADES = {
   ticks: (a, b) => Array.from({ length: Math.max(0, Math.floor(b) - Math.ceil(a) + 1) }, (_, i) => Math.ceil(a) + i),
-  label: (d) => `1e${d}`,
+  label: (d) => drawing.decadeLabel(10 ** d),
 };
 
 /** The frame `f` ({x0, x1, y0, y1, left, top, pw, ph}) with ticks and labels on `scale`. */
@@ -199,8 +190,9 @@ function pixel(f, x, y) {
 }
 
 function bar(g, lo, hi, x, top, h) {
+  const shades = colours(Array.from({ length: h }, (_, i) => 1 - i / h));
   for (let i = 0; i < h; i++) {
-    const [R, G, B] = colour(1 - i / h);
+    const [R, G, B] = shades[i];
     g.fillStyle = `rgb(${R},${G},${B})`;
     g.fillRect(x, top + i, 16, 1);
   }
@@ -259,7 +251,7 @@ function rough() {
   }
 }
 
-const TRACK_COLOURS = ['#1e5ac8', '#c83c28', '#28963c', '#963caa', '#dc8c14', '#000'];
+const { tracks: TRACK_COLOURS, reference: REFERENCE_GREY } = drawing.figureColours();
 
 /** A line through `points` ([x, y] in the frame's units; null: a gap), clipped to it. */
 function polyline(g, f, points, colour, width) {
@@ -320,10 +312,10 @@ function roughnessFigure(canvas, tracks) {
   axes(g, top, 'n [cycles/m]', 'Gd(n) [m³]', DECADES);
   // Gd(n) = Gd(n0) (n / n0)^-2, in log10: a line of slope -2 through (log n0, log Gd(n0)).
   const band = (at) => [[top.x0, at - 2 * (top.x0 - Math.log10(n0))], [top.x1, at - 2 * (top.x1 - Math.log10(n0))]];
-  for (const l of limits) polyline(g, top, band(Math.log10(l)), '#969696', 1);
+  for (const l of limits) polyline(g, top, band(Math.log10(l)), REFERENCE_GREY, 1);
   const half = Math.log10(4) / 2;
   const middles = [Math.log10(limits[0]) - half, ...limits.slice(1).map((l, k) => (Math.log10(limits[k]) + Math.log10(l)) / 2), Math.log10(limits[limits.length - 1]) + half];
-  g.fillStyle = '#969696';
+  g.fillStyle = REFERENCE_GREY;
   g.textAlign = 'center';
   [...classes].forEach((letter, k) => {
     const at = [2, 1, 5, 0.5, 0.2, 0.1, 0.05, 0.02]
@@ -451,9 +443,8 @@ if (params.get('road')) {
     const name = decodeURIComponent(url.pathname.split('/').pop());
     const files = { [name]: await fetchBytes(url) };
     if (name.toLowerCase().endsWith('.xodr')) {
-      const text = new TextDecoder().decode(files[name]);
-      for (const m of text.matchAll(/<CRG\b[^>]*\bfile="([^"]+)"/g)) {
-        files[m[1]] = await fetchBytes(new URL(m[1], url));
+      for (const file of odr.crgFilesOf(files[name], name)) {
+        files[file] = await fetchBytes(new URL(file, url));
       }
     }
     const fetched = performance.now();

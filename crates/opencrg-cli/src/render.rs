@@ -1,7 +1,7 @@
 //! Pictures of a road: a top view in x/y coloured by elevation with hill shading, axes,
 //! a colour bar and a scale bar; and sections along u or across v as line plots.
 
-use crate::plot::{self, font, tick, Area, Figure, Image, LABEL, TITLE};
+use crate::plot::{self, font, tick_label, Area, Figure, Image, LABEL, TITLE};
 use opencrg_core::{Budget, ContactPoint};
 use plotters::prelude::*;
 
@@ -17,17 +17,9 @@ const NO_DATA: Rgb = [190, 190, 190];
 
 type Rgb = [u8; 3];
 
-/// A few colours from deep blue through green to yellow, for low to high elevation.
-const COLOUR_STOPS: [Rgb; 6] =
-    [[48, 18, 59], [50, 101, 211], [27, 186, 161], [122, 221, 60], [233, 201, 40], [254, 247, 160]];
-
-/// The colour of a value `t` in 0..1 along the colour stops.
+/// The colour of a value `t` in 0..1: the drawing rules' elevation colours.
 fn colour(t: f64) -> Rgb {
-    let t = t.clamp(0.0, 1.0) * (COLOUR_STOPS.len() - 1) as f64;
-    let i = (t.floor() as usize).min(COLOUR_STOPS.len() - 2);
-    let f = t - i as f64;
-    let (a, b) = (COLOUR_STOPS[i], COLOUR_STOPS[i + 1]);
-    [0, 1, 2].map(|k| (f64::from(a[k]) + f * (f64::from(b[k]) - f64::from(a[k]))).round() as u8)
+    opencrg_tools::drawing::elevation_colour(t)
 }
 
 fn shade(c: Rgb, light: f64) -> Rgb {
@@ -282,14 +274,14 @@ pub(crate) fn height_picture(r: &Raster, title: &str) -> Result<Figure, String> 
         let mut chart = ChartBuilder::on(&area)
             .x_label_area_size(BELOW)
             .y_label_area_size(LEFT)
-            .build_cartesian_2d(x0..x1, y0..y1)
+            .build_cartesian_2d(plot::ruled(x0, x1), plot::ruled(y0, y1))
             .map_err(plot::failed)?;
         plot::lettered(&mut chart.configure_mesh())
             .disable_mesh()
             .x_labels((mw as usize / 90).max(4))
             .y_labels((mh as usize / 50).max(4))
-            .x_label_formatter(&|v| tick(*v))
-            .y_label_formatter(&|v| tick(*v))
+            .x_label_formatter(&|v| tick_label(*v))
+            .y_label_formatter(&|v| tick_label(*v))
             .x_desc("x [m]")
             .y_desc("y [m]")
             .draw()
@@ -314,7 +306,7 @@ fn scale_bar(root: &Area, longest: f64, px: f64, y: u32) -> Result<(), String> {
     for end in [x, x + bar] {
         root.draw(&PathElement::new(vec![(end, y - 4), (end, y + 9)], BLACK.stroke_width(1))).map_err(plot::failed)?;
     }
-    root.draw_text(&format!("{} m", tick(length)), &font(LABEL), (x + bar + 8, y - 4)).map_err(plot::failed)
+    root.draw_text(&format!("{} m", tick_label(length)), &font(LABEL), (x + bar + 8, y - 4)).map_err(plot::failed)
 }
 
 /// The colour bar: the colours from low to high with ticks in metres and a title, and
@@ -333,7 +325,7 @@ fn colour_bar(
         .margin_top(6)
         .margin_bottom(6)
         .right_y_label_area_size(72)
-        .build_cartesian_2d(0.0..1.0, lo..hi)
+        .build_cartesian_2d(0.0..1.0, plot::ruled(lo, hi))
         .map_err(plot::failed)?;
     let steps = 128;
     chart
@@ -347,7 +339,7 @@ fn colour_bar(
         .disable_mesh()
         .disable_x_axis()
         .y_labels(((height / 40) as usize).max(4))
-        .y_label_formatter(&|v| tick(*v))
+        .y_label_formatter(&|v| tick_label(*v))
         .y_desc("z [m]")
         .draw()
         .map_err(plot::failed)?;
@@ -401,8 +393,8 @@ pub fn profile(cp: &mut ContactPoint, name: &str, section: Section) -> Result<Fi
     let pad = if zmax > zmin { 0.05 * (zmax - zmin) } else { 0.5e-3 };
     let (zlo, zhi) = (zmin - pad, zmax + pad);
     let title = match section {
-        Section::AtU(u) => format!("{name}: elevation across the road at u = {} m", tick(u)),
-        Section::AtV(v) => format!("{name}: elevation along the road at v = {} m", tick(v)),
+        Section::AtU(u) => format!("{name}: elevation across the road at u = {} m", tick_label(u)),
+        Section::AtV(v) => format!("{name}: elevation along the road at v = {} m", tick_label(v)),
     };
     Figure::draw(900, 440, None, |root| {
         root.draw_text(&title, &font(TITLE), (LEFT as i32, 14)).map_err(plot::failed)?;
@@ -412,13 +404,13 @@ pub fn profile(cp: &mut ContactPoint, name: &str, section: Section) -> Result<Fi
             .margin_bottom(8)
             .x_label_area_size(BELOW)
             .y_label_area_size(LEFT)
-            .build_cartesian_2d(from..to, zlo..zhi)
+            .build_cartesian_2d(plot::ruled(from, to), plot::ruled(zlo, zhi))
             .map_err(plot::failed)?;
         plot::gridded(&mut chart.configure_mesh())
             .x_labels(10)
             .y_labels(8)
-            .x_label_formatter(&|v| tick(*v))
-            .y_label_formatter(&|v| tick(*v))
+            .x_label_formatter(&|v| tick_label(*v))
+            .y_label_formatter(&|v| tick_label(*v))
             .x_desc(along)
             .y_desc("z [m]")
             .draw()

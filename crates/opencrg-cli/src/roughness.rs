@@ -2,7 +2,8 @@
 //! table, as JSON, and as a figure (the densities on log-log axes among the class
 //! bands, the IRI segment by segment along u).
 
-use crate::plot::{self, font, tick, Figure, AXIS, TITLE};
+use crate::plot::{self, font, tick_label, Figure, AXIS, TITLE};
+use opencrg_tools::drawing::{REFERENCE_GREY, TRACK_COLOURS};
 use opencrg_tools::psd::{CLASSES, CLASS_LIMITS, N0};
 use opencrg_tools::roughness::Track;
 use plotters::prelude::*;
@@ -73,16 +74,12 @@ pub fn json(tracks: &[Track], segment: f64) -> Value {
     json!({ "segment_m": segment, "tracks": tracks })
 }
 
-/// The tracks' colours, in turn.
-const COLOURS: [RGBColor; 6] = [
-    RGBColor(30, 90, 200),
-    RGBColor(200, 60, 40),
-    RGBColor(40, 150, 60),
-    RGBColor(150, 60, 170),
-    RGBColor(220, 140, 20),
-    RGBColor(0, 0, 0),
-];
-const CLASS_LINE: RGBColor = RGBColor(150, 150, 150);
+const CLASS_LINE: RGBColor = RGBColor(REFERENCE_GREY[0], REFERENCE_GREY[1], REFERENCE_GREY[2]);
+/// The tracks' colours (the drawing rules'), in turn.
+fn track_colours() -> impl Iterator<Item = RGBColor> {
+    TRACK_COLOURS.iter().map(|&[r, g, b]| RGBColor(r, g, b)).cycle()
+}
+
 /// The spatial frequencies the density panel shows, cycles/m (a hair wider than three
 /// decades, so that rounding keeps both ends' labels).
 const N_RANGE: (f64, f64) = (0.01 * (1.0 - 1e-9), 10.0 * (1.0 + 1e-9));
@@ -138,8 +135,8 @@ fn plot_psd(area: &plot::Area, tracks: &[Track], name: &str, g_range: (f64, f64)
     plot::gridded(&mut psd.configure_mesh())
         .x_labels(8)
         .y_labels(12)
-        .x_label_formatter(&|n| plot::decade(*n))
-        .y_label_formatter(&|g| plot::decade(*g))
+        .x_label_formatter(&|n| plot::decade_label(*n))
+        .y_label_formatter(&|g| plot::decade_label(*g))
         .x_desc("n [cycles/m]")
         .y_desc("Gd(n) [m³]")
         .draw()
@@ -168,12 +165,12 @@ fn plot_psd(area: &plot::Area, tracks: &[Track], name: &str, g_range: (f64, f64)
             .map_err(plot::failed)?;
         }
     }
-    for (t, colour) in tracks.iter().zip(COLOURS.iter().cycle()) {
+    for (t, colour) in tracks.iter().zip(track_colours()) {
         let points: Vec<(f64, f64)> = t.psd.bands.iter().filter(|b| b.1 > 0.0).copied().collect();
         let style = colour.stroke_width(2);
         psd.draw_series(LineSeries::new(points.iter().copied(), style))
             .map_err(plot::failed)?
-            .label(format!("v = {} m (class {})", tick(t.v), t.psd.class))
+            .label(format!("v = {} m (class {})", tick_label(t.v), t.psd.class))
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
         psd.draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled()))).map_err(plot::failed)?;
     }
@@ -189,7 +186,7 @@ fn plot_iri(area: &plot::Area, tracks: &[Track], segment: f64) -> Result<(), Str
     });
     let (u0, u1) = if u1 > u0 { (u0, u1) } else { (0.0, 1.0) };
     let i_hi = if i_max > 0.0 { i_max * 1.15 } else { 1.0 };
-    area.draw_text(&format!("IRI per {} m segment", tick(segment)), &font(TITLE), (LEFT as i32, 8))
+    area.draw_text(&format!("IRI per {} m segment", tick_label(segment)), &font(TITLE), (LEFT as i32, 8))
         .map_err(plot::failed)?;
     let mut iri = ChartBuilder::on(area)
         .margin_top(36)
@@ -197,18 +194,18 @@ fn plot_iri(area: &plot::Area, tracks: &[Track], segment: f64) -> Result<(), Str
         .margin_bottom(8)
         .x_label_area_size(52)
         .y_label_area_size(LEFT)
-        .build_cartesian_2d(u0..u1, 0.0..i_hi)
+        .build_cartesian_2d(plot::ruled(u0, u1), plot::ruled(0.0, i_hi))
         .map_err(plot::failed)?;
     plot::gridded(&mut iri.configure_mesh())
         .x_labels(10)
         .y_labels(6)
-        .x_label_formatter(&|v| tick(*v))
-        .y_label_formatter(&|v| tick(*v))
+        .x_label_formatter(&|v| tick_label(*v))
+        .y_label_formatter(&|v| tick_label(*v))
         .x_desc("u [m]")
         .y_desc("IRI [m/km]")
         .draw()
         .map_err(plot::failed)?;
-    for (t, colour) in tracks.iter().zip(COLOURS.iter().cycle()) {
+    for (t, colour) in tracks.iter().zip(track_colours()) {
         let style = colour.stroke_width(2);
         // Consecutive segments with an IRI join into one stepped line.
         let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
@@ -223,7 +220,7 @@ fn plot_iri(area: &plot::Area, tracks: &[Track], segment: f64) -> Result<(), Str
             let drawn = iri.draw_series(LineSeries::new(run, style)).map_err(plot::failed)?;
             if std::mem::take(&mut first) {
                 drawn
-                    .label(format!("v = {} m", tick(t.v)))
+                    .label(format!("v = {} m", tick_label(t.v)))
                     .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], style));
             }
         }

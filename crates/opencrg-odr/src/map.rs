@@ -172,6 +172,20 @@ impl Map {
         self.by_id.get(id).copied()
     }
 
+    /// The CRG files the map's records name (their `file` attributes as written), each
+    /// once, roads' records before junctions', in the file's order: what must be at hand
+    /// to lay them on.
+    pub fn crg_file_names(&self) -> Vec<&str> {
+        let records = self.roads.iter().flat_map(|r| &r.crg).chain(self.junctions.iter().flat_map(|j| &j.crg));
+        let mut names: Vec<&str> = Vec::new();
+        for record in records {
+            if !names.contains(&record.file.as_str()) {
+                names.push(&record.file);
+            }
+        }
+        names
+    }
+
     /// The roads' lengths added up (m), those that are not a positive number left out:
     /// what the work of sampling the whole map is shared by.
     pub fn length(&self) -> f64 {

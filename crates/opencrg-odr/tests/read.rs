@@ -126,6 +126,7 @@ fn unknown_elements_are_skipped_and_crg_records_read() {
         (j.connecting_roads.clone(), j.crg[0].mode, j.crg[0].s_end),
         (vec!["c".to_string()], CrgMode::Global, f64::INFINITY)
     );
+    assert_eq!(map.crg_file_names(), ["cobbles.crg", "/abs/mu.crg", "junction.crg"]);
 }
 
 #[test]

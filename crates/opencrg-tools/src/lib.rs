@@ -35,6 +35,7 @@ mod analysis {
     pub mod roughness;
 }
 mod export {
+    pub mod drawing;
     #[cfg(feature = "fmu")]
     pub mod fmu;
     pub(crate) mod gltf;
@@ -64,7 +65,7 @@ mod make {
 pub use analysis::{iri, psd, roughness};
 #[cfg(feature = "fmu")]
 pub use export::fmu;
-pub use export::{map_mesh, mesh, mesh_files, simplify, view};
+pub use export::{drawing, map_mesh, mesh, mesh_files, simplify, view};
 pub use make::append::append;
 pub use make::channels::{change_channel, ChannelAction, LineChannel};
 pub use make::compare::{compare, Comparison};

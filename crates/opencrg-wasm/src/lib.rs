@@ -5,6 +5,7 @@
 //! package's `index.js` loads it (no init call in Node) and names the map classes `odr`.
 
 mod contact;
+mod drawing;
 mod errors;
 mod evaluate;
 mod limits;
@@ -14,6 +15,7 @@ mod settings;
 mod values;
 
 pub use contact::ContactPoint;
+pub use drawing::{decade_label, elevation_colours, figure_colours, tick_label, ticks};
 pub use errors::Thrown;
 pub use evaluate::evaluations;
 pub use map::Map;

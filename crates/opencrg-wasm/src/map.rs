@@ -39,6 +39,15 @@ impl Map {
         Ok(Map { surface: Arc::new(surface) })
     }
 
+    /// The CRG files the map in `bytes` names (each once, as its records write them):
+    /// the files [`Map::from_bytes`] wants beside the map.
+    #[wasm_bindgen(js_name = crgFilesOf)]
+    pub fn crg_files_of(bytes: &[u8], name: Option<String>) -> Result<Vec<String>, Thrown> {
+        let name = name.unwrap_or_else(|| "map.xodr".into());
+        let map = OdrMap::from_bytes(bytes, Path::new(&name)).map_err(crate::errors::error)?;
+        Ok(map.crg_file_names().into_iter().map(String::from).collect())
+    }
+
     /// The ground at world points: `{z, friction, road, lane, s, t}`, each a number or a
     /// `Float64Array` (NaN off every road; `road` is the index into `roadIds`, -1 off
     /// every road; friction NaN where neither a record nor the lane's material gives one).

@@ -11,7 +11,7 @@ import { pathToFileURL } from 'node:url';
 
 const [pkg, examples] = process.argv.slice(2);
 const opencrg = await import(pathToFileURL(join(pkg, 'index.js')).href);
-const { Road, ContactPoint, evaluations, iso8608Classes, odr } = opencrg;
+const { Road, ContactPoint, drawing, evaluations, iso8608Classes, odr } = opencrg;
 const { CrgError, FormatError, NotFoundError, CheckError, RequestError, OutOfRangeError, TooLargeError } = opencrg;
 // The error classes tell what is thrown apart, as Python's: `kind` and its parents only.
 const kindOf = (f, kind, others) => {
@@ -132,4 +132,11 @@ assert.equal(classes.n0, 0.1);
 assert.equal(classes.classes, 'ABCDEFGH');
 assert.equal(classes.limits.length, 7);
 classes.limits.slice(1).forEach((l, k) => close(l / classes.limits[k], 4));
+// The map's CRG files from the map crate; the drawing rules of the command's figures.
+assert.deepEqual(odr.crgFilesOf(readFileSync(join(examples, 'demo_map.xodr')), 'demo_map.xodr'), ['demo_road.crg']);
+assert.deepEqual([...drawing.elevationColours(new Float64Array([0, 1, -2]))], [48, 18, 59, 254, 247, 160, 48, 18, 59]);
+assert.deepEqual([...drawing.ticks(0, 10, 6)], [0, 2, 4, 6, 8, 10]);
+assert.equal(drawing.tickLabel(0.30000000000000004), '0.3');
+assert.equal(drawing.decadeLabel(1e-6), '10\u207B\u2076');
+assert.equal(drawing.figureColours().tracks[0], 'rgb(30,90,200)');
 console.log('npm package API: ok');

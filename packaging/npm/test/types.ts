@@ -1,7 +1,7 @@
 // Every documented call of the npm package, type-checked against its index.d.ts
 // (`tsc --strict --noEmit`, test.sh): a declaration that is missing or that disagrees with
 // the guide's use (docs/web.md) fails here. Never run: it only has to compile.
-import { ContactPoint, Road, evaluations, iso8608Classes, odr } from './index.js';
+import { ContactPoint, Road, drawing, evaluations, iso8608Classes, odr } from './index.js';
 import { CheckError, CrgError, FormatError, IoError, NotFoundError } from './index.js';
 import { OutOfRangeError, RequestError, TooLargeError } from './index.js';
 
@@ -61,6 +61,12 @@ const findings: string[] = map.check();
 const ids: string[] = map.roadIds;
 const lengths: Float64Array = map.roadLengths;
 const mapText: string = map.info() + map.viewPage('demo_map.xodr', 0.01);
+const named: string[] = odr.crgFilesOf(bytes, 'demo_map.xodr');
+
+const rgb: Uint8Array = drawing.elevationColours(new Float64Array([0, 0.5, 1]));
+const steps: Float64Array = drawing.ticks(0, 10, 6);
+const labels: string = drawing.tickLabel(0.5) + drawing.decadeLabel(1e-6);
+const css: string[] = drawing.figureColours().tracks.concat(drawing.figureColours().reference);
 map.free();
 road.free();
 

@@ -7,10 +7,13 @@
 mod raster;
 mod ticks;
 
-pub use ticks::{decade, round_length, tick};
+pub use opencrg_tools::drawing::{decade_label, tick_label, ticks};
+pub use ticks::round_length;
 
 use plotters::chart::MeshStyle;
 use plotters::coord::ranged1d::Ranged;
+use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint};
+use plotters::coord::types::RangedCoordf64;
 use plotters::coord::{CoordTranslate, Shift};
 use plotters::prelude::*;
 use std::path::Path;
@@ -85,6 +88,34 @@ pub fn lettered<'m, 'a, 'b, X: Ranged, Y: Ranged>(
     mesh: &'m mut MeshStyle<'a, 'b, X, Y, SVGBackend<'a>>,
 ) -> &'m mut MeshStyle<'a, 'b, X, Y, SVGBackend<'a>> {
     mesh.label_style(font(LABEL)).axis_desc_style(font(AXIS))
+}
+
+/// An axis over a..b whose ticks (and the finer grid's lines) lie at the drawing rules'
+/// round steps, as many as the axis asks for at most.
+#[derive(Clone)]
+pub struct Ruled(RangedCoordf64);
+
+/// The axis a..b ticked by the drawing rules.
+pub fn ruled(a: f64, b: f64) -> Ruled {
+    Ruled((a..b).into())
+}
+
+impl Ranged for Ruled {
+    type FormatOption = DefaultFormatting;
+    type ValueType = f64;
+
+    fn map(&self, value: &f64, limit: (i32, i32)) -> i32 {
+        self.0.map(value, limit)
+    }
+
+    fn key_points<H: KeyPointHint>(&self, hint: H) -> Vec<f64> {
+        let range = self.0.range();
+        ticks(range.start, range.end, hint.max_num_points())
+    }
+
+    fn range(&self) -> std::ops::Range<f64> {
+        self.0.range()
+    }
 }
 
 /// [`lettered`], and the grid in the figures' greys.
