@@ -8,7 +8,8 @@
 #
 # Checks: the exported functions against the header; the C tests (API with the shared
 # and the static library, threads, extensions, private header, compatibility profile,
-# messages on stderr); the conformance suite in both behaviour profiles (../shared);
+# messages on stderr); the conformance suite in both behaviour profiles (../shared) and
+# the differential tester's roads (target/generated-suite, when test.sh made it);
 # the command's `info` on the project's demo road; the FMU binary through a small FMI
 # host (c-tests/fmu); for Windows also the zip's CMake package with MinGW and the MSVC
 # import library with lld-link.
@@ -185,6 +186,29 @@ for client in "${clients[@]}"; do
         ok "conformance ($profile profile, client: $how): $(tail -1 "$out.log")"
     done
 done
+
+# The differential tester's roads (c-tests/generated, made by test.sh before these runs),
+# current profile, against the Linux library's answers to the bit: with glibc (Linux on
+# either processor) in every case, elsewhere but for the cases allowed.txt counts (where
+# glibc rounds a sine, cosine or arc tangent otherwise than the portable functions).
+generated="$root/target/generated-suite"
+if [ -f "$generated/cases.txt" ]; then
+    allowed=0
+    [ "$platform" != windows ] || allowed=$(sed -n 's/^current //p' c-tests/generated/allowed.txt)
+    generated_run() {
+        rm -rf "$work/generated"
+        CC=$cc CONFORMANCE_RUNNER="${run[*]}" CONFORMANCE_DATA="$generated" \
+            sh "$conformance" include "$shared" "$work/generated" >"$work/generated.log" 2>&1 || true
+        python3 c-tests/generated/same_bits.py "$generated/golden" "$work/generated" "$allowed" >"$work/generated.bits"
+    }
+    if ! generated_run; then
+        died=$(grep -l 'the client exited with status' "$work/generated"/*.err 2>/dev/null | wc -l)
+        [ "$died" -gt 0 ] || { tail -5 "$work/generated.bits"; exit 1; }
+        echo "cross $platform: $died client(s) died under the emulator without answering - running the generated roads again"
+        generated_run || { tail -5 "$work/generated.bits"; exit 1; }
+    fi
+    ok "the differential tester's roads: $(tail -1 "$work/generated.bits") (at most $allowed may)"
+fi
 
 # The command.
 "${tool[@]}" info "$road" >"$work/info.log" 2>&1 || { cat "$work/info.log"; exit 1; }
