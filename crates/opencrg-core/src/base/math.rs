@@ -2,11 +2,11 @@
 //!
 //! With glibc (Linux on any processor) they are the C library's, as in the reference
 //! library built there: the answers the conformance suites hold. Everywhere else
-//! (Windows, macOS, WebAssembly, musl) they are [`crate::base::portable_math`]'s correctly rounded
-//! ones. glibc's are correctly rounded at all but about 1 argument in 700, so these
-//! platforms give Linux's answers far more often than with their own C library (whose
-//! sine differs from glibc's at about 1 argument in 33, its arc tangent at 1 in 6);
-//! docs/performance.md has the figures.
+//! (Windows, macOS, WebAssembly, musl) they are [`crate::base::portable_math`]'s
+//! correctly rounded ones. glibc's are correctly rounded at all but about 1 argument in
+//! 700, so these platforms give Linux's answers far more often than with their own C
+//! library (the `libm` compiled into WebAssembly differs from glibc at about 1 sine in 33
+//! and 1 arc tangent in 6); docs/performance.md has the figures.
 
 /// The correctly rounded functions, on every platform (those of this module where the
 /// C library is not glibc).
