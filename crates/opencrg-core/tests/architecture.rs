@@ -265,22 +265,31 @@ fn long_functions(text: &str, limit: usize) -> Vec<String> {
     out
 }
 
+/// Every Rust source under `src` (the crate's root too), with its text.
+fn sources(src: &Path) -> Vec<(PathBuf, String)> {
+    let mut out = Vec::new();
+    let mut dirs = vec![src.to_path_buf()];
+    while let Some(dir) = dirs.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                dirs.push(path);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                let text = std::fs::read_to_string(&path).unwrap();
+                out.push((path, text));
+            }
+        }
+    }
+    out
+}
+
 #[test]
 fn no_function_outside_tests_is_longer_than_100_lines() {
     let mut long = Vec::new();
     for krate in CRATES {
         let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join(krate).join("src");
-        let mut dirs = vec![src];
-        while let Some(dir) = dirs.pop() {
-            for entry in std::fs::read_dir(&dir).unwrap() {
-                let path = entry.unwrap().path();
-                if path.is_dir() {
-                    dirs.push(path);
-                } else if path.extension().is_some_and(|e| e == "rs") {
-                    let text = std::fs::read_to_string(&path).unwrap();
-                    long.extend(long_functions(&text, 100).into_iter().map(|f| format!("{}: {f}", path.display())));
-                }
-            }
+        for (path, text) in sources(&src) {
+            long.extend(long_functions(&text, 100).into_iter().map(|f| format!("{}: {f}", path.display())));
         }
     }
     long.sort();
@@ -299,19 +308,11 @@ fn a_long_function_is_found() {
 
 #[test]
 fn the_evaluator_hides_no_public_item() {
-    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
-    let mut dirs = vec![src];
-    while let Some(dir) = dirs.pop() {
-        for entry in std::fs::read_dir(&dir).unwrap() {
-            let path = entry.unwrap().path();
-            if path.is_dir() {
-                dirs.push(path);
-            } else if std::fs::read_to_string(&path).unwrap().contains("#[doc(hidden)]") {
-                panic!(
-                    "{}: an item hidden from the documentation (public API is documented, the rest is not public)",
-                    path.display()
-                );
-            }
-        }
+    for (path, text) in sources(&Path::new(env!("CARGO_MANIFEST_DIR")).join("src")) {
+        assert!(
+            !text.contains("#[doc(hidden)]"),
+            "{}: an item hidden from the documentation (public API is documented, the rest is not public)",
+            path.display()
+        );
     }
 }

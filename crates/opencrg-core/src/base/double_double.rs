@@ -5,6 +5,8 @@
 //! Valid away from overflow and underflow, which is where [`crate::base::portable_math`]
 //! uses it.
 
+use std::ops::Neg;
+
 /// A number `hi + lo` with `|lo| <= ulp(hi) / 2`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Dd {
@@ -83,12 +85,6 @@ impl Dd {
         Dd { hi, lo }
     }
 
-    /// `-self`.
-    #[inline]
-    pub(crate) fn neg(self) -> Dd {
-        Dd { hi: -self.hi, lo: -self.lo }
-    }
-
     /// `self * b`.
     #[inline]
     pub(crate) fn mul(self, b: Dd) -> Dd {
@@ -117,6 +113,16 @@ impl Dd {
     #[inline]
     pub(crate) fn round(self) -> f64 {
         self.hi + self.lo
+    }
+}
+
+impl Neg for Dd {
+    type Output = Dd;
+
+    /// `-self`.
+    #[inline]
+    fn neg(self) -> Dd {
+        Dd { hi: -self.hi, lo: -self.lo }
     }
 }
 

@@ -14,6 +14,7 @@
 //! sin(j/64), cos(j/64) to short Taylor series. The arc tangent corrects a first
 //! estimate with one Newton step through that sine and cosine.
 
+use std::ops::Neg;
 use std::sync::OnceLock;
 
 use crate::base::double_double::{two_prod, two_sum, Dd};
@@ -85,34 +86,14 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
             (s.round(), c.round())
         }
     };
-    let (s, c) = match quadrant & 3 {
-        0 => (s, c),
-        1 => (c, -s),
-        2 => (-s, -c),
-        _ => (-c, s),
-    };
-    if x < 0.0 {
-        (-s, c)
-    } else {
-        (s, c)
-    }
+    placed(quadrant, x < 0.0, s, c)
 }
 
 /// The sine and cosine of a finite `x` as double-doubles.
 fn sin_cos_dd(x: f64) -> (Dd, Dd) {
     let (quadrant, r) = reduce(x.abs());
     let (s, c) = sin_cos_reduced(r);
-    let (s, c) = match quadrant & 3 {
-        0 => (s, c),
-        1 => (c, s.neg()),
-        2 => (s.neg(), c.neg()),
-        _ => (c.neg(), s),
-    };
-    if x < 0.0 {
-        (s.neg(), c)
-    } else {
-        (s, c)
-    }
+    placed(quadrant, x < 0.0, s, c)
 }
 
 /// sin and cos of the reduced `r` in doubles with a bound of their error (Ziv's test):
@@ -152,6 +133,22 @@ fn sin_cos_quick(r: Dd) -> Option<(f64, f64)> {
 /// The relative error bound of [`sin_cos_quick`]'s sums (2^-62, eight times the largest
 /// error of its operations).
 const ZIV_BOUND: f64 = f64::from_bits(0x3c1_0000_0000_0000); // 2^-62
+
+/// The sine and cosine of `x` from those of its reduced argument: turned by its quadrant,
+/// the sine negated for a negative `x`.
+fn placed<T: Neg<Output = T>>(quadrant: u32, negative: bool, s: T, c: T) -> (T, T) {
+    let (s, c) = match quadrant & 3 {
+        0 => (s, c),
+        1 => (c, -s),
+        2 => (-s, -c),
+        _ => (-c, s),
+    };
+    if negative {
+        (-s, c)
+    } else {
+        (s, c)
+    }
+}
 
 /// `a` (positive, finite) as `quadrant * pi/2 + r` with `|r| <= pi/4` (nearly).
 fn reduce(a: f64) -> (u32, Dd) {
