@@ -90,13 +90,15 @@ pub fn modify_road<R>(id: c_int, f: impl FnOnce(&mut Road) -> R + Send) -> Optio
 }
 
 /// Removes a data set and its contact points.
+///
+/// The contact points go while the data set table is still locked: once the lock is
+/// released the id may be given to a new data set (ids are one more than the largest in
+/// use), and the new data set's contact points must not be taken for the old one's.
 pub fn release_dataset(id: c_int) -> bool {
-    let removed = {
-        let mut sets = lock(&DATASETS);
-        let before = sets.len();
-        sets.retain(|d| d.id != id);
-        sets.len() != before
-    };
+    let mut sets = lock(&DATASETS);
+    let before = sets.len();
+    sets.retain(|d| d.id != id);
+    let removed = sets.len() != before;
     if removed {
         delete_cps_of(Some(id));
     }
@@ -246,6 +248,29 @@ mod tests {
         assert!(delete_cp(b));
         assert!(!counting(), "deleting a counting contact point ends the counted way");
         assert!(delete_cp(a));
+    }
+
+    #[test]
+    fn a_released_id_given_again_keeps_the_new_contact_points() {
+        // Each thread loads, makes a contact point, checks it and releases, over and
+        // over: ids are given again at once, so a release that removed contact points
+        // after giving up the table would now and then take another thread's.
+        let road = RoadSpec::straight(10.0, 2.0, 0.5, 0.5).build().expect("a valid road");
+        std::thread::scope(|scope| {
+            for _ in 0..8 {
+                let road = road.clone();
+                scope.spawn(move || {
+                    for _ in 0..2_000 {
+                        let set = add_dataset(road.clone());
+                        let cp = create_cp(set);
+                        assert!(cp >= 0);
+                        std::thread::yield_now();
+                        assert!(with_cp(cp, |_| ()).is_some(), "contact point {cp} of data set {set} lost");
+                        assert!(release_dataset(set));
+                    }
+                });
+            }
+        });
     }
 
     #[test]
