@@ -28,29 +28,59 @@ cd "$(dirname "$0")"
     { echo "test.sh: needs ../shared beside the checkout (the project's test data)" >&2; exit 1; }
 # Each group's time, for the test run's budget (40 minutes on 2 cores, .ci/run included).
 step() { echo "test.sh: $SECONDS s: $1"; }
+# What the later steps install from the registries (the rust-version's toolchain, Python
+# environments, npm packages), fetched in the background while the first steps compile;
+# the publishing checks wait for it. The wheel's environment is made where cargo cannot be
+# found (the wheel must install without it).
+version=$(sed -n 's/^version = "\(.*\)"/\1/p' Cargo.toml | head -1)
+msrv=$(sed -n 's/^rust-version = "\(.*\)"/\1/p' Cargo.toml)
+no_cargo=$(printf '%s' "$PATH" | tr ':' '\n' | grep -v -e cargo -e rustup | paste -sd: -)
+venv() {
+    local dir=target/$1
+    shift
+    rm -rf "$dir"
+    python3 -m venv "$dir"
+    "$dir/bin/pip" install -q --upgrade pip
+    [ $# -eq 0 ] || "$dir/bin/pip" install -q "$@"
+}
+environments() {
+    rustup toolchain install "$msrv" --profile minimal >/dev/null
+    venv fmu-venv "fmpy>=0.3.20,<0.4" numpy pytest
+    venv python-build "maturin[zig]>=1.7,<2"
+    env PATH="$no_cargo" sh -c '! command -v cargo >/dev/null'
+    (PATH="$no_cargo" && venv python-venv numpy pytest "dask[distributed]" pyproj matplotlib fmpy)
+    venv python-sdist-venv numpy pytest
+    npm install --silent --no-save --prefix target/tsc "typescript@5" >/dev/null
+    npm install --silent --no-save --prefix target/gltf-validator gltf-validator >/dev/null
+}
+mkdir -p target
+environments >target/environments.log 2>&1 &
+environments_job=$!
 cargo fmt --all --check
 cargo clippy --workspace --all-targets -- -D warnings
 RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps
 step "Rust tests"
-cargo test --workspace
-# The tests that read ../shared (ignored in a plain clone).
-cargo test --workspace -- --ignored shared_
+# Every test, with the ones that read ../shared (ignored in a plain clone), each in its
+# own process and the test programs side by side (cargo-nextest); the oracles' tests
+# run below, against their oracles. Then the doctests (the README's among them).
+oracles='binary(=libopendrive) | binary(=crg_reference)'
+cargo nextest run --workspace --run-ignored all -E "not ($oracles)" --status-level fail --final-status-level slow
+cargo test --workspace --doc
 # The maps' wheel queries, the FMU's answers and the files the toolkit writes once more
 # with every binary road read in place (the maps' CRG files are KDBI): the answers they
 # check must not change.
-OPENCRG_IN_PLACE=always cargo test --workspace --test ground --test answers --test official_rules -- --include-ignored
+OPENCRG_IN_PLACE=always cargo nextest run --workspace --run-ignored all \
+    -E 'binary(=ground) | binary(=answers) | binary(=official_rules)' --status-level fail
 step "publishing checks"
+wait "$environments_job" || { cat target/environments.log; echo "test.sh: fetching the environments failed" >&2; exit 1; }
 # Ready to publish: the workspace's crates depended on at the workspace's version; the
 # rust-version true (the workspace's libraries and programs check with that toolchain,
 # installed by rustup); every
 # publishable crate packaged and built from its .crate alone, in dependency order.
-version=$(sed -n 's/^version = "\(.*\)"/\1/p' Cargo.toml | head -1)
 if grep -E '^opencrg[-a-z]* = .*version = ' Cargo.toml | grep -v "version = \"$version\""; then
     echo "the workspace's crates must be depended on at version $version" >&2
     exit 1
 fi
-msrv=$(sed -n 's/^rust-version = "\(.*\)"/\1/p' Cargo.toml)
-rustup toolchain install "$msrv" --profile minimal >/dev/null 2>&1
 cargo "+$msrv" check -q --workspace --lib --bins --locked --target-dir target/msrv
 # cargo takes a registry crate of a given version to be the same forever: it unpacks each
 # packaged crate into CARGO_HOME once per version and reuses what it built from it, so
@@ -104,10 +134,6 @@ step "FMU"
 # file and of shared maps with CRG records in every mode, FMI 2 and 3, co-simulation and
 # model exchange, against the C API and `opencrg odr eval` to the bit (the C host of
 # c-tests/fmu drove each platform's binary in the cross runs above).
-rm -rf target/fmu-venv
-python3 -m venv target/fmu-venv
-target/fmu-venv/bin/pip install -q --upgrade pip
-target/fmu-venv/bin/pip install -q "fmpy>=0.3.20,<0.4" numpy pytest
 OPENCRG_CLI="$PWD/target/release/opencrg" OPENCRG_LIB="$PWD/target/release/libopencrg.so" \
     target/fmu-venv/bin/python -m pytest -q -p no:cacheprovider crates/opencrg-fmi/tests/fmpy
 step "WebAssembly"
@@ -148,7 +174,6 @@ done
 OPENCRG_CLI="$PWD/target/release/opencrg" node packaging/npm/test/api.mjs target/wasm-dist/package examples/data
 # The package's types against a program using every documented call (TypeScript from the
 # npm registry), compiled beside the package's index.d.ts.
-npm install --silent --no-save --prefix target/tsc "typescript@5" >/dev/null
 cp packaging/npm/test/types.ts target/wasm-dist/package/types_check.ts
 (cd target/wasm-dist/package && ../../tsc/node_modules/.bin/tsc --strict --noEmit --module nodenext \
     --moduleResolution nodenext --target es2022 types_check.ts && rm types_check.ts)
@@ -160,7 +185,6 @@ step "glTF and views"
 # The .glb export of the demo road (curved, sloped, banked), whole, a part and simplified,
 # and of the demo map (the demo road laid on a road of an OpenDRIVE map), against the
 # Khronos glTF validator, from the npm registry.
-npm install --silent --no-save --prefix target/gltf-validator gltf-validator >/dev/null
 target/release/opencrg export examples/data/demo_road.crg target/demo_road.glb
 target/release/opencrg export examples/data/demo_road.crg target/demo_part.glb --u 30:60 --v -1:2
 target/release/opencrg export examples/data/demo_road.crg target/demo_simple.glb --max-error 0.002
@@ -202,9 +226,6 @@ python3 crates/opencrg-cli/tests/check_view.py target/demo_map_view.png
 python3 crates/opencrg-cli/tests/check_odr_view.py target/demo_map_view.dom examples/data/demo_map.xodr target/release/opencrg
 step "Python wheel"
 # The Python wheel as users get it: manylinux2014 (glibc 2.17), abi3, linked by zig.
-python3 -m venv target/python-build
-target/python-build/bin/pip install -q --upgrade pip
-target/python-build/bin/pip install -q "maturin[zig]>=1.7,<2"
 rm -f target/wheels/opencrg-*.whl
 # The wheel carries the FMU binary of the Linux archive (glibc 2.17) for write_fmu.
 fmu_binaries=crates/opencrg-python/python/opencrg/fmu
@@ -216,12 +237,7 @@ env PATH="$PWD/target/python-build/bin:$PATH" maturin build -q --release --zig -
 rm -rf "$fmu_binaries"
 wheel=$(ls target/wheels/opencrg-*-cp39-abi3-*manylinux_2_17_x86_64*.whl)
 # Installed into a fresh environment where cargo cannot be found, and tested there.
-rm -rf target/python-venv
-python3 -m venv target/python-venv
-no_cargo=$(printf '%s' "$PATH" | tr ':' '\n' | grep -v -e cargo -e rustup | paste -sd: -)
-env PATH="$no_cargo" sh -c '! command -v cargo >/dev/null'
-env PATH="$no_cargo" target/python-venv/bin/pip install -q --upgrade pip
-env PATH="$no_cargo" target/python-venv/bin/pip install -q numpy pytest "dask[distributed]" pyproj matplotlib fmpy "$wheel"
+env PATH="$no_cargo" target/python-venv/bin/pip install -q "$wheel"
 env PATH="$no_cargo" OPENCRG_CLI="$PWD/target/release/opencrg" target/python-venv/bin/python -m pytest -q -p no:logging crates/opencrg-python/tests
 step "Python sdist"
 # The source distribution as PyPI would serve it: installed into a fresh environment that
@@ -229,10 +245,6 @@ step "Python sdist"
 # and type stub tests run there (the wheel ran the whole suite on the same sources).
 rm -f target/sdist/opencrg-*.tar.gz
 target/python-build/bin/maturin sdist -m crates/opencrg-python/Cargo.toml --out target/sdist >/dev/null
-rm -rf target/python-sdist-venv
-python3 -m venv target/python-sdist-venv
-target/python-sdist-venv/bin/pip install -q --upgrade pip
-target/python-sdist-venv/bin/pip install -q numpy pytest
 # (Built where the workspace's development builds are, so the registry crates built for
 # them are not built again.)
 CARGO_TARGET_DIR="$PWD/target" target/python-sdist-venv/bin/pip install -q --config-settings=build-args="--profile=dev" \

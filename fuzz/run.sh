@@ -17,7 +17,9 @@ host=$(rustc -vV | sed -n 's/^host: //p')
 export RUSTFLAGS="--cfg fuzzing -Cpasses=sancov-module -Cllvm-args=-sanitizer-coverage-level=4 \
 -Cllvm-args=-sanitizer-coverage-inline-8bit-counters -Cllvm-args=-sanitizer-coverage-pc-table \
 -Cllvm-args=-sanitizer-coverage-trace-compares -Cdebug-assertions -Coverflow-checks"
-(cd fuzz && cargo build -q --release --target "$host" --target-dir ../target/fuzz)
+# Optimised at level 1: the build takes about half the time it takes at level 3, and the
+# runs cover as many paths in their seconds.
+(cd fuzz && CARGO_PROFILE_RELEASE_OPT_LEVEL=1 cargo build -q --release --target "$host" --target-dir ../target/fuzz)
 bin=target/fuzz/$host/release
 corpus=target/fuzz/corpus
 mkdir -p "$corpus" target/fuzz/findings
