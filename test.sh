@@ -97,15 +97,13 @@ step "OpenDRIVE oracles"
 ../shared/oracles/build-libopendrive.sh "$PWD/target/libopendrive" >/dev/null
 g++ -O2 -std=c++17 -I target/libopendrive/include crates/opencrg-odr/tests/oracle/libopendrive_answers.cpp \
     -L target/libopendrive/lib -lOpenDrive -lpugixml -o target/libopendrive/answers
-OPENCRG_ODR_ORACLE="$PWD/target/libopendrive/answers" \
-    cargo test --release -p opencrg-odr --test libopendrive -- --include-ignored --nocapture
 # The CRG records of every mode against the reference C library, built outside the
 # project by ../shared/reference/build-references.sh.
 ../shared/reference/build-references.sh "$PWD/target/crgref" >/dev/null
 cc -O2 -I target/crgref/up crates/opencrg-odr/tests/oracle/crg_reference_answers.c target/crgref/up/libOpenCRG.so \
     -lm -Wl,-rpath,"$PWD/target/crgref/up" -o target/crgref/answers
-OPENCRG_CRG_REFERENCE="$PWD/target/crgref/answers" \
-    cargo test --release -p opencrg-odr --test crg_reference -- --include-ignored --nocapture
+OPENCRG_ODR_ORACLE="$PWD/target/libopendrive/answers" OPENCRG_CRG_REFERENCE="$PWD/target/crgref/answers" \
+    cargo test --release -p opencrg-odr --test libopendrive --test crg_reference -- --include-ignored --nocapture
 step "C tests"
 cargo build --release -p opencrg-capi -p opencrg-cli -p opencrg-fmi
 # The instructions of the hot calls (path, u/v, map wheel, loading) against the baseline
