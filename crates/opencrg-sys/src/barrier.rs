@@ -9,11 +9,18 @@
 //! `FlushProcessWriteBuffers` (the same guarantee, documented for exactly this use).
 //! Where neither is available (another system, an old kernel, a sandbox refusing the
 //! call) no thread is ever made owner and every access takes the lock.
+//!
+//! Under Miri (the model tests of the owner path: `cargo +nightly miri test -p
+//! opencrg-sys --lib owner::`), which has no such call, the pair is modelled as the
+//! memory model knows it: the barrier as a sequentially consistent fence, and the
+//! owner's side ([`owner_side`]) as one too, which is what the barrier makes of the
+//! owner's compiler fence on the processor that runs it. Miri then checks the protocol
+//! with its data race detector and weak memory emulation.
 
 use std::sync::atomic::{fence, Ordering};
 use std::sync::OnceLock;
 
-#[cfg(target_os = "linux")]
+#[cfg(all(target_os = "linux", not(miri)))]
 mod sys {
     use std::ffi::c_int;
 
@@ -34,7 +41,7 @@ mod sys {
     }
 }
 
-#[cfg(windows)]
+#[cfg(all(windows, not(miri)))]
 mod sys {
     #[link(name = "kernel32")]
     extern "system" {
@@ -52,7 +59,19 @@ mod sys {
     }
 }
 
-#[cfg(not(any(target_os = "linux", windows)))]
+#[cfg(miri)]
+mod sys {
+    pub fn register() -> bool {
+        true
+    }
+
+    pub fn run() -> bool {
+        // The fences around this call in `everywhere` are the model of the barrier.
+        true
+    }
+}
+
+#[cfg(not(any(target_os = "linux", windows, miri)))]
 mod sys {
     pub fn register() -> bool {
         false
@@ -64,6 +83,17 @@ mod sys {
 }
 
 static REGISTERED: OnceLock<bool> = OnceLock::new();
+
+/// The owner's side of the barrier, between its busy mark and its check of the
+/// ownership: keeps the compiler from moving the one across the other (the processor's
+/// reordering is what [`everywhere`] covers, run by the thread that revokes).
+#[inline(always)]
+pub fn owner_side() {
+    #[cfg(not(miri))]
+    std::sync::atomic::compiler_fence(Ordering::SeqCst);
+    #[cfg(miri)]
+    fence(Ordering::SeqCst);
+}
 
 /// Whether [`everywhere`] can run (registers the process on first use).
 pub fn available() -> bool {

@@ -6,35 +6,39 @@
 //! read without a call: the thread control block's self-reference on x86_64 Linux
 //! (`fs:0`, what `pthread_self` returns with glibc and musl), the thread pointer on
 //! 64-bit Arm Linux (`tpidr_el0`), the thread environment block's self-reference on
-//! 64-bit Windows (`gs:0x30`). Elsewhere, the address of a thread-local byte.
+//! 64-bit Windows (`gs:0x30`). Elsewhere (and under Miri, which runs no assembly), the
+//! address of a thread-local byte.
 
 /// This thread's id (see the module's text).
 #[inline(always)]
 pub(crate) fn thread_id() -> usize {
     let id: usize;
-    #[cfg(all(target_arch = "x86_64", target_os = "linux"))]
+    #[cfg(all(target_arch = "x86_64", target_os = "linux", not(miri)))]
     // SAFETY: fs:0 always holds the thread control block's own address there; reading
     // it has no side effects.
     unsafe {
         std::arch::asm!("mov {}, fs:0", out(reg) id, options(nostack, readonly, preserves_flags, pure))
     };
-    #[cfg(all(target_arch = "aarch64", target_os = "linux"))]
+    #[cfg(all(target_arch = "aarch64", target_os = "linux", not(miri)))]
     // SAFETY: reading the thread pointer register has no side effects; the C library
     // sets it to the thread's own control block before the thread runs any code.
     unsafe {
         std::arch::asm!("mrs {}, tpidr_el0", out(reg) id, options(nomem, nostack, preserves_flags, pure))
     };
-    #[cfg(all(target_arch = "x86_64", windows))]
+    #[cfg(all(target_arch = "x86_64", windows, not(miri)))]
     // SAFETY: gs:0x30 always holds the thread environment block's own address on 64-bit
     // Windows; reading it has no side effects.
     unsafe {
         std::arch::asm!("mov {}, gs:0x30", out(reg) id, options(nostack, readonly, preserves_flags, pure))
     };
-    #[cfg(not(any(
-        all(target_arch = "x86_64", target_os = "linux"),
-        all(target_arch = "aarch64", target_os = "linux"),
-        all(target_arch = "x86_64", windows)
-    )))]
+    #[cfg(any(
+        miri,
+        not(any(
+            all(target_arch = "x86_64", target_os = "linux"),
+            all(target_arch = "aarch64", target_os = "linux"),
+            all(target_arch = "x86_64", windows)
+        ))
+    ))]
     {
         thread_local!(static MARK: u8 = const { 0 });
         id = MARK.with(|m| m as *const u8 as usize);
