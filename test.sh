@@ -2,8 +2,8 @@
 # Runs every test: formatting, lints and documentation, the Rust tests (unit,
 # integration, header freshness, the opencrg command, doctests incl. the README's), the
 # crates as published (the rust-version's toolchain, `cargo package`), the contact
-# points' owner path under Miri, a short run of every fuzz target, the OpenDRIVE geometry against libOpenDRIVE and its CRG
-# records against the reference C library, then
+# points' owner path under Miri, a short run of every fuzz target, the OpenDRIVE
+# geometry against libOpenDRIVE and its CRG records against the reference C library, then
 # the instruction guard of the hot calls (callgrind against a kept baseline), through
 # CTest the C tests (also under the sanitizers and valgrind), the header and
 # symbol checks, the CMake consumer project, the conformance suite in both behaviour
@@ -43,7 +43,7 @@ venv() {
     rm -rf "$dir"
     python3 -m venv "$dir"
     "$dir/bin/pip" install -q --upgrade pip
-    [ $# -eq 0 ] || "$dir/bin/pip" install -q "$@"
+    "$dir/bin/pip" install -q "$@"
 }
 environments() {
     rustup toolchain install "$msrv" --profile minimal >/dev/null
