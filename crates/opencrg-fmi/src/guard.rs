@@ -43,11 +43,20 @@ pub(crate) unsafe fn on_instance(
         return Status::Error;
     }
     let instance = instance.cast::<Instance>();
+    // The refusal is kept aside, so that the answer of the unwinding guard is a flag:
+    // the path of every call that succeeds tests one byte.
+    let mut refused = None;
     // SAFETY: the caller's promise: a live instance of ours, this thread's alone.
-    let outcome = catch_unwind(AssertUnwindSafe(|| body(unsafe { &mut *instance })));
+    let outcome = catch_unwind(AssertUnwindSafe(|| match body(unsafe { &mut *instance }) {
+        Ok(()) => true,
+        Err(why) => {
+            refused = Some(why);
+            false
+        }
+    }));
     let (status, message) = match outcome {
-        Ok(Ok(())) => return Status::Ok,
-        Ok(Err(refused)) => (refused.status, refused.message),
+        Ok(true) => return Status::Ok,
+        Ok(false) => refused.map_or((Status::Error, String::new()), |r| (r.status, r.message)),
         Err(_) => {
             // SAFETY: as above; the body's borrow ended with the panic.
             unsafe { (*instance).state = State::Broken };
@@ -75,7 +84,7 @@ pub(crate) unsafe fn slice<'a, T>(p: *const T, n: usize, what: &str) -> Result<&
         return Ok(&[]);
     }
     if p.is_null() {
-        return Err(error(format!("{what} is null for {n} values")));
+        return Err(null_array(what, n));
     }
     // SAFETY: the caller's promise.
     Ok(unsafe { std::slice::from_raw_parts(p, n) })
@@ -91,10 +100,17 @@ pub(crate) unsafe fn slice_mut<'a, T>(p: *mut T, n: usize, what: &str) -> Result
         return Ok(&mut []);
     }
     if p.is_null() {
-        return Err(error(format!("{what} is null for {n} values")));
+        return Err(null_array(what, n));
     }
     // SAFETY: the caller's promise.
     Ok(unsafe { std::slice::from_raw_parts_mut(p, n) })
+}
+
+/// The refusal of a null array of `n` values.
+#[cold]
+#[inline(never)]
+fn null_array(what: &str, n: usize) -> Refused {
+    error(format!("{what} is null for {n} values"))
 }
 
 /// A C string as text (lossy); `None` for null.

@@ -34,24 +34,67 @@ pub fn error(message: impl ToString) -> Refused {
     Refused { status: Status::Error, message: message.to_string() }
 }
 
-/// The value references of the last call that named only wheel quantities, decoded: an
-/// importer passes the same array every step, which is then compared, not decoded again.
-#[derive(Default)]
-struct Decoded {
-    vrs: Vec<u32>,
-    quantities: Vec<(usize, Quantity)>,
+/// A table by value reference of the wheel (0-based) and quantity each reference names,
+/// for the references of one kind: the hot paths' decoding.
+type Slots = Box<[Option<(u16, Quantity)>]>;
+
+/// The [`Slots`] of the wheel quantities of an FMU of `kind` with `wheels` wheels that
+/// are `of_kind`.
+fn slots(kind: Kind, wheels: u32, of_kind: impl Fn(Quantity) -> bool) -> Slots {
+    let end = variables::wheel_vr(wheels + 1, Quantity::X);
+    (0..end)
+        .map(|vr| {
+            let (wheel, q) = variables::wheel_of(kind, wheels, vr).filter(|&(_, q)| of_kind(q))?;
+            Some((u16::try_from(wheel - 1).ok()?, q))
+        })
+        .collect()
 }
 
-impl Decoded {
-    /// `vrs` decoded by `decode` (which knows each of them).
-    fn of(vrs: &[u32], decode: impl Fn(u32) -> Option<(usize, Quantity)>) -> Decoded {
-        let quantities = vrs.iter().filter_map(|&vr| decode(vr)).collect::<Vec<_>>();
-        if quantities.len() == vrs.len() {
-            Decoded { vrs: vrs.to_vec(), quantities }
-        } else {
-            Decoded::default()
+/// The entry of [`Instance`]'s input table for a reference that names no input.
+const NO_INPUT: u32 = u32::MAX;
+
+/// The input table of an FMU of `kind` with `wheels` wheels: by value reference, the
+/// wheels' input slot ([`Wheels::input_slot`]) of each x and y, [`NO_INPUT`] elsewhere.
+fn input_slots(kind: Kind, wheels: u32) -> Box<[u32]> {
+    let slot = |vr| {
+        let (wheel, q) = variables::wheel_of(kind, wheels, vr)?;
+        u32::try_from(Wheels::input_slot(wheel as usize - 1, q)?).ok()
+    };
+    (0..variables::wheel_vr(wheels + 1, Quantity::X)).map(|vr| slot(vr).unwrap_or(NO_INPUT)).collect()
+}
+
+/// Stores `values` into the wheels' input slots `inputs` gives their references `vrs`,
+/// up to the first reference of no input; answers how many it stored. A loop of its own:
+/// its arguments do not overlap, so the tables' places are read once.
+#[inline(always)]
+fn store_inputs(inputs: &[u32], wheels: &mut Wheels, vrs: &[u32], values: &[f64]) -> usize {
+    for (k, (&vr, &value)) in vrs.iter().zip(values).enumerate() {
+        let slot = inputs.get(vr as usize).map_or(NO_INPUT, |&slot| slot);
+        if !wheels.set_slot(slot as usize, value) {
+            return k;
         }
     }
+    vrs.len()
+}
+
+/// Reads into `out` the wheels' Real variables `vrs` names (by `reals`), up to the first
+/// reference of none; answers how many it read. A loop of its own: its arguments do not
+/// overlap, so the tables' places are read once, not after each value written.
+#[inline(always)]
+fn read_reals(
+    reals: &[Option<(u16, Quantity)>],
+    wheels: &mut Wheels,
+    friction: f64,
+    vrs: &[u32],
+    out: &mut [f64],
+) -> usize {
+    for (k, (&vr, value)) in vrs.iter().zip(out).enumerate() {
+        let Some((wheel, q)) = reals.get(vr as usize).copied().flatten() else {
+            return k;
+        };
+        *value = wheels.real(usize::from(wheel), q, friction);
+    }
+    vrs.len()
 }
 
 /// A parameter's value.
@@ -68,8 +111,11 @@ pub struct Instance {
     fmu: Fmu,
     kind: Kind,
     wheel_count: u32,
-    /// Bit k set: quantity k of a wheel is a Real variable of this FMU.
-    reals: u32,
+    /// By value reference: the wheel (0-based) and quantity of each Real wheel variable.
+    reals: Slots,
+    /// By value reference: the slot of each input (x, y) among the wheels'
+    /// ([`Wheels::input_slot`]); [`NO_INPUT`] for the references of no input.
+    inputs: Box<[u32]>,
     wheels: Wheels,
     interface: Interface,
     fmi: Fmi,
@@ -83,9 +129,6 @@ pub struct Instance {
     pub logging_on: bool,
     /// What the last string get handed out (valid until the next call).
     strings: Vec<CString>,
-    /// The last gets and sets of wheel quantities, decoded.
-    last_get: Decoded,
-    last_set: Decoded,
 }
 
 impl Instance {
@@ -121,14 +164,14 @@ impl Instance {
         };
         let wheels = fmu.wheels(&[]).map_err(|e| e.to_string())?;
         let wheel_count = fmu.config.wheels;
-        let reals = (0..32)
-            .filter(|&k| Quantity::from_offset(k).is_some_and(|q| q.of(kind) && q.ty() == Type::Real))
-            .fold(0u32, |mask, k| mask | 1 << k);
+        let reals = slots(kind, wheel_count, |q| q.ty() == Type::Real);
+        let inputs = input_slots(kind, wheel_count);
         Ok(Instance {
             fmu,
             kind,
             wheel_count,
             reals,
+            inputs,
             wheels,
             interface,
             fmi,
@@ -139,8 +182,6 @@ impl Instance {
             logger,
             logging_on: false,
             strings: Vec::new(),
-            last_get: Decoded::default(),
-            last_set: Decoded::default(),
         })
     }
 
@@ -200,39 +241,36 @@ impl Instance {
     }
 
     /// The wheel (0-based) and quantity of a Real output or input `vr` names, if it
-    /// names one of this FMU: the hot path, a division and a mask.
+    /// names one of this FMU: the hot path, one table entry.
     #[inline(always)]
     fn wheel_real(&self, vr: u32) -> Option<(usize, Quantity)> {
-        let (wheel, k) = (vr / variables::WHEEL_STRIDE, vr % variables::WHEEL_STRIDE);
-        let known = wheel.wrapping_sub(1) < self.wheel_count && k < 32 && (self.reals >> k) & 1 == 1;
-        known.then(|| (wheel as usize - 1, Quantity::from_offset(k).unwrap_or(Quantity::X)))
+        let (wheel, q) = self.reals.get(vr as usize).copied().flatten()?;
+        Some((usize::from(wheel), q))
     }
 
     /// Real variables into `out`: a wheel's input or output (computed where the wheel
-    /// moved since), the time, a real parameter.
+    /// moved since), the time, a real parameter. The hot path decodes each reference
+    /// by a table and reads the wheel's answer; anything else goes the cold way.
     #[inline(always)]
     pub fn reals(&mut self, vrs: &[u32], out: &mut [f64]) -> Result<(), Refused> {
-        let readable = Call::Get.allowed_in(self.state);
-        let friction = self.parameters.friction_default;
-        if readable && vrs == self.last_get.vrs.as_slice() {
-            let Instance { last_get, wheels, .. } = self;
-            for (&(i, q), value) in last_get.quantities.iter().zip(out) {
-                *value = wheels.real(i, q, friction);
+        let mut read = 0;
+        if Call::Get.allowed_in(self.state) {
+            let friction = self.parameters.friction_default;
+            read = read_reals(&self.reals, &mut self.wheels, friction, vrs, out);
+            if read == vrs.len() {
+                return Ok(());
             }
-            return Ok(());
         }
-        let mut all_wheels = readable;
+        self.reals_otherwise(&vrs[read..], &mut out[read..])
+    }
+
+    /// [`Instance::reals`] from the first variable that is no wheel's Real, or in a state
+    /// that allows no get.
+    #[cold]
+    #[inline(never)]
+    fn reals_otherwise(&mut self, vrs: &[u32], out: &mut [f64]) -> Result<(), Refused> {
         for (&vr, value) in vrs.iter().zip(out) {
-            *value = match self.wheel_real(vr) {
-                Some((i, q)) if readable => self.wheels.real(i, q, friction),
-                _ => {
-                    all_wheels = false;
-                    self.real_otherwise(vr)?
-                }
-            };
-        }
-        if all_wheels {
-            self.last_get = Decoded::of(vrs, |vr| self.wheel_real(vr));
+            *value = self.real_otherwise(vr)?;
         }
         Ok(())
     }
@@ -257,38 +295,39 @@ impl Instance {
     }
 
     /// Sets Real variables: the wheels' x and y, the friction default, real options.
+    /// The hot path stores each input in its place by a table; anything else goes the
+    /// cold way.
     #[inline(always)]
     pub fn set_reals(&mut self, vrs: &[u32], values: &[f64]) -> Result<(), Refused> {
-        let settable = Call::SetInput.allowed_in(self.state);
-        if settable && vrs == self.last_set.vrs.as_slice() {
-            let Instance { last_set, wheels, .. } = self;
-            for (&(i, q), &value) in last_set.quantities.iter().zip(values) {
-                wheels.set(i, q, value);
+        let mut stored = 0;
+        if Call::SetInput.allowed_in(self.state) {
+            stored = store_inputs(&self.inputs, &mut self.wheels, vrs, values);
+            if stored == vrs.len() {
+                return Ok(());
             }
-            return Ok(());
         }
-        let mut all_inputs = settable;
+        self.set_reals_otherwise(&vrs[stored..], &values[stored..])
+    }
+
+    /// [`Instance::set_reals`] from the first variable that is no wheel's input, or in a
+    /// state that allows no input to be set.
+    #[cold]
+    #[inline(never)]
+    fn set_reals_otherwise(&mut self, vrs: &[u32], values: &[f64]) -> Result<(), Refused> {
+        let settable = Call::SetInput.allowed_in(self.state);
         for (&vr, &value) in vrs.iter().zip(values) {
             match self.wheel_input(vr) {
                 Some((i, q)) if settable => self.wheels.set(i, q, value),
-                _ => {
-                    all_inputs = false;
-                    self.set_real_otherwise(vr, value)?;
-                }
+                _ => self.set_real_otherwise(vr, value)?,
             }
-        }
-        if all_inputs {
-            self.last_set = Decoded::of(vrs, |vr| self.wheel_input(vr));
         }
         Ok(())
     }
 
     /// The wheel (0-based) and quantity of an input (x or y) `vr` names, if it does.
-    #[inline(always)]
     fn wheel_input(&self, vr: u32) -> Option<(usize, Quantity)> {
-        let (wheel, k) = (vr / variables::WHEEL_STRIDE, vr % variables::WHEEL_STRIDE);
-        let known = wheel.wrapping_sub(1) < self.wheel_count && k <= Quantity::Y as u32;
-        known.then(|| (wheel as usize - 1, if k == Quantity::X as u32 { Quantity::X } else { Quantity::Y }))
+        let (wheel, q) = variables::wheel_of(self.kind, self.wheel_count, vr).filter(|&(_, q)| q.is_input())?;
+        Some((wheel as usize - 1, q))
     }
 
     /// [`Instance::set_reals`] off the hot path: parameters, refusals.

@@ -106,8 +106,8 @@ impl Terrain {
 /// One wheel's answer, as far as it was computed since the wheel last moved.
 #[derive(Debug, Clone, Copy, Default)]
 struct Answer {
-    /// The base answer: computed at all?
-    known: bool,
+    /// The position (x and y's bits) the base answer is of; none before the first.
+    of: Option<[u64; 2]>,
     on_road: bool,
     z: f64,
     /// Friction the road gives (NaN: none).
@@ -124,6 +124,45 @@ struct Answer {
     located: bool,
     normal: Option<[f64; 3]>,
     pk: Option<(f64, f64)>,
+}
+
+/// A CRG file's u and v ranges, the grid (on the road within them): first and last u,
+/// first and last v; everywhere on a map (not used there).
+type Ranges = [f64; 4];
+
+impl Answer {
+    /// The answer where there is no place: neither found nor answered.
+    fn nowhere() -> Answer {
+        Answer { friction: f64::NAN, road: -1, ..Answer::default() }
+    }
+
+    /// Found at (`a`, `b`), no height answered (yet).
+    #[inline(always)]
+    fn located(a: f64, b: f64) -> Answer {
+        Answer { located: true, a, b, ..Answer::nowhere() }
+    }
+
+    /// A CRG file's answer at the (u, v) its search found, with the height the library
+    /// answered there: on the road where the height is finite and (u, v) within `ranges`.
+    fn of_crg(u: f64, v: f64, z: Result<f64>, ranges: &Ranges) -> Answer {
+        let mut answer = Answer::located(u, v);
+        match z {
+            Ok(z) if z.is_finite() => answer.answer_crg(u, v, z, ranges),
+            _ => {}
+        }
+        answer
+    }
+
+    /// Makes this a CRG file's answer of height `z` (finite) at (u, v), written field by
+    /// field (this runs once per wheel and step). The fields a CRG file's answers all
+    /// hold alike (no friction, road or lane) are kept: the answer must be one of a CRG
+    /// file already (made by one of the functions above).
+    #[inline(always)]
+    fn answer_crg(&mut self, u: f64, v: f64, z: f64, &[u0, u1, v0, v1]: &Ranges) {
+        self.on_road = u >= u0 && u <= u1 && v >= v0 && v <= v1;
+        (self.answered, self.located, self.z, self.a, self.b) = (true, true, z, u, v);
+        (self.normal, self.pk) = (None, None);
+    }
 }
 
 /// The evaluator of one wheel (held in place, one per wheel: no indirection on the
@@ -153,7 +192,7 @@ type Discrete = (bool, i32, i32);
 pub struct Wheels {
     wheels: Vec<Wheel>,
     /// A CRG file's u and v ranges (the grid: on the road within them).
-    ranges: Option<((f64, f64), (f64, f64))>,
+    ranges: Ranges,
 }
 
 /// What an output holds off the road (see the guide): no height, the normal up, the
@@ -187,13 +226,16 @@ impl Wheels {
             wheels.push(Wheel {
                 at: [start.0, start.1],
                 evaluator,
-                answer: Answer::default(),
+                answer: Answer::nowhere(),
                 latched: (false, -1, 0),
             });
         }
         let ranges = match terrain {
-            Terrain::Crg(road) => Some((road.u_range(), road.v_range())),
-            Terrain::Map(_) => None,
+            Terrain::Crg(road) => {
+                let ((u0, u1), (v0, v1)) = (road.u_range(), road.v_range());
+                [u0, u1, v0, v1]
+            }
+            Terrain::Map(_) => [f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY],
         };
         Ok(Wheels { wheels, ranges })
     }
@@ -212,14 +254,27 @@ impl Wheels {
     /// are ignored).
     #[inline(always)]
     pub fn set(&mut self, i: usize, quantity: Quantity, value: f64) {
-        let wheel = &mut self.wheels[i];
-        let Some(slot) = wheel.at.get_mut(quantity as usize) else {
-            return;
-        };
-        // A set to the same value keeps the answer (importers set every input each step).
-        if slot.to_bits() != value.to_bits() {
-            *slot = value;
-            wheel.answer.known = false;
+        if let Some(slot) = Wheels::input_slot(i, quantity) {
+            self.set_slot(slot, value);
+        }
+    }
+
+    /// The input slot of wheel `i`'s (0-based) x or y: `2 i` and `2 i + 1`.
+    pub fn input_slot(i: usize, quantity: Quantity) -> Option<usize> {
+        quantity.is_input().then(|| 2 * i + quantity as usize)
+    }
+
+    /// Sets the input in `slot` (see [`Wheels::input_slot`]); false where there is no
+    /// such wheel. An answer is computed anew when its wheel's position differs from
+    /// the one it is of.
+    #[inline(always)]
+    pub fn set_slot(&mut self, slot: usize, value: f64) -> bool {
+        match self.wheels.get_mut(slot / 2) {
+            Some(wheel) => {
+                wheel.at[slot % 2] = value;
+                true
+            }
+            None => false,
         }
     }
 
@@ -227,25 +282,24 @@ impl Wheels {
     /// wheel moved; `friction_default` where the road gives no friction.
     #[inline(always)]
     pub fn real(&mut self, i: usize, quantity: Quantity, friction_default: f64) -> f64 {
-        let ranges = self.ranges;
         let wheel = &mut self.wheels[i];
+        let at = wheel.at;
         match quantity {
-            Quantity::X | Quantity::Y => return wheel.at[quantity as usize],
+            Quantity::X | Quantity::Y => return at[quantity as usize],
             _ => {}
         }
-        wheel.base(ranges);
+        wheel.base(at, &self.ranges);
         if quantity == Quantity::Z {
             return wheel.answer.z;
         }
-        wheel.other(quantity, friction_default)
+        wheel.other(at, quantity, friction_default)
     }
 
     /// An Integer quantity of wheel `i` (0-based): a map's road and lane.
     #[inline]
     pub fn integer(&mut self, i: usize, quantity: Quantity) -> i32 {
-        let ranges = self.ranges;
         let wheel = &mut self.wheels[i];
-        wheel.base(ranges);
+        wheel.base(wheel.at, &self.ranges);
         match quantity {
             Quantity::Road => wheel.answer.road,
             Quantity::Lane => wheel.answer.lane,
@@ -256,18 +310,16 @@ impl Wheels {
     /// Whether wheel `i` (0-based) is on the road.
     #[inline]
     pub fn on_road(&mut self, i: usize) -> bool {
-        let ranges = self.ranges;
         let wheel = &mut self.wheels[i];
-        wheel.base(ranges);
+        wheel.base(wheel.at, &self.ranges);
         wheel.answer.on_road
     }
 
     /// Every wheel's discrete answers (on the road, road, lane) as they are now become
     /// those of the last event (model exchange: at initialization and at each event).
     pub fn latch(&mut self) {
-        let ranges = self.ranges;
         for wheel in &mut self.wheels {
-            wheel.base(ranges);
+            wheel.base(wheel.at, &self.ranges);
             wheel.latched = wheel.discrete();
         }
     }
@@ -281,45 +333,68 @@ impl Wheels {
 impl Wheel {
     /// Computes the base answer if the wheel moved since: found where the road answers
     /// the height and the wheel is on the road (within a CRG file's grid, on a map's
-    /// road); a CRG file's u and v wherever its search answers.
-    #[inline]
-    fn base(&mut self, ranges: Option<((f64, f64), (f64, f64))>) {
-        if self.answer.known {
-            return;
+    /// road); a CRG file's u and v wherever its search answers. A CRG file's common case
+    /// (the lean search and the plain elevation, as `crgEvalxy2z` takes it) is inline,
+    /// every other case in [`Wheel::base_otherwise`].
+    #[inline(always)]
+    fn base(&mut self, at: [f64; 2], ranges: &Ranges) {
+        let of = Some(at.map(f64::to_bits));
+        if self.answer.of != of {
+            self.compute(at, ranges);
+            self.answer.of = of;
         }
-        let [x, y] = self.at;
-        // Written field by field: this runs once per wheel and step.
-        let a = &mut self.answer;
-        (a.known, a.normal, a.pk) = (true, None, None);
-        (a.on_road, a.answered, a.located, a.z, a.road, a.lane) = (false, false, false, 0.0, -1, 0);
+    }
+
+    /// The base answer at `at` (see [`Wheel::base`]).
+    #[inline(never)]
+    fn compute(&mut self, at: [f64; 2], ranges: &Ranges) {
+        let [x, y] = at;
         match &mut self.evaluator {
-            // Not a place: no search (its u and v would not be finite).
-            Evaluator::Crg(_) if !(x.is_finite() && y.is_finite()) => (a.friction, a.a, a.b) = (f64::NAN, 0.0, 0.0),
-            Evaluator::Crg(cp) => {
-                a.friction = f64::NAN;
-                match cp.xy_to_uv(x, y) {
-                    Ok((u, v)) => {
-                        (a.located, a.a, a.b) = (true, u, v);
-                        if let Ok(z) = cp.z_of_found(u, v) {
-                            if z.is_finite() {
-                                let ((u0, u1), (v0, v1)) = ranges.unwrap_or(((u, u), (v, v)));
-                                a.on_road = (u0..=u1).contains(&u) && (v0..=v1).contains(&v);
-                                (a.answered, a.z) = (true, z);
-                            }
-                        }
-                    }
-                    Err(_) => (a.a, a.b) = (0.0, 0.0),
-                }
-            }
-            Evaluator::Map(probe, _) => match probe.ground(x, y).filter(|g| g.z.is_finite()) {
-                Some(g) => {
-                    (a.on_road, a.answered, a.located) = (true, true, true);
-                    (a.z, a.friction, a.a, a.b) = (g.z, g.friction, g.s, g.t);
-                    (a.road, a.lane) = (i32::try_from(g.road).unwrap_or(i32::MAX), g.lane);
-                }
-                None => (a.friction, a.a, a.b) = (f64::NAN, 0.0, 0.0),
+            Evaluator::Crg(cp) => match cp.xy_to_uv_lean(x, y) {
+                Some((u, v)) => match cp.uv_to_z_plain(u, v) {
+                    Some(z) if z.is_finite() => self.answer.answer_crg(u, v, z, ranges),
+                    _ => self.base_found(u, v, ranges),
+                },
+                None => self.base_otherwise(x, y, ranges),
             },
+            Evaluator::Map(..) => self.base_otherwise(x, y, ranges),
         }
+    }
+
+    /// [`Wheel::base`] of a CRG file whose lean search found (u, v) where the plain
+    /// elevation does not apply.
+    #[inline(never)]
+    fn base_found(&mut self, u: f64, v: f64, ranges: &Ranges) {
+        if let Evaluator::Crg(cp) = &mut self.evaluator {
+            self.answer = Answer::of_crg(u, v, cp.z_of_found(u, v), ranges);
+        }
+    }
+
+    /// [`Wheel::base`] where a CRG file's lean search declined, and on a map.
+    #[inline(never)]
+    fn base_otherwise(&mut self, x: f64, y: f64, ranges: &Ranges) {
+        self.answer = match &mut self.evaluator {
+            // Not a place: no search (its u and v would not be finite).
+            Evaluator::Crg(_) if !(x.is_finite() && y.is_finite()) => Answer::nowhere(),
+            Evaluator::Crg(cp) => match cp.xy_to_uv_general(x, y) {
+                Ok((u, v)) => Answer::of_crg(u, v, cp.z_of_found(u, v), ranges),
+                Err(_) => Answer::nowhere(),
+            },
+            Evaluator::Map(probe, _) => match probe.ground(x, y).filter(|g| g.z.is_finite()) {
+                Some(g) => Answer {
+                    on_road: true,
+                    answered: true,
+                    z: g.z,
+                    friction: g.friction,
+                    a: g.s,
+                    b: g.t,
+                    road: i32::try_from(g.road).unwrap_or(i32::MAX),
+                    lane: g.lane,
+                    ..Answer::located(g.s, g.t)
+                },
+                None => Answer::nowhere(),
+            },
+        };
     }
 
     /// The discrete answers (the base answer known).
@@ -329,7 +404,7 @@ impl Wheel {
 
     /// A Real quantity other than the height (the base answer known).
     #[inline(never)]
-    fn other(&mut self, quantity: Quantity, friction_default: f64) -> f64 {
+    fn other(&mut self, at: [f64; 2], quantity: Quantity, friction_default: f64) -> f64 {
         let a = &self.answer;
         match quantity {
             Quantity::EventIndicator if self.discrete() == self.latched => 1.0,
@@ -344,7 +419,7 @@ impl Wheel {
                     0.0
                 }
             }
-            Quantity::Nx | Quantity::Ny | Quantity::Nz => self.normal()[quantity as usize - Quantity::Nx as usize],
+            Quantity::Nx | Quantity::Ny | Quantity::Nz => self.normal(at)[quantity as usize - Quantity::Nx as usize],
             Quantity::Heading => self.pk().0,
             Quantity::Curvature => self.pk().1,
             _ => 0.0,
@@ -352,7 +427,7 @@ impl Wheel {
     }
 
     /// The upward unit normal (the base answer known); up where none is known.
-    fn normal(&mut self) -> [f64; 3] {
+    fn normal(&mut self, [x, y]: [f64; 2]) -> [f64; 3] {
         if let Some(n) = self.answer.normal {
             return n;
         }
@@ -362,7 +437,7 @@ impl Wheel {
         } else {
             let n = match &mut self.evaluator {
                 Evaluator::Crg(cp) => cp.uv_to_normal(a.a, a.b).ok().map(|(_, n)| n),
-                Evaluator::Map(_, probe) => probe.normal(self.at[0], self.at[1]),
+                Evaluator::Map(_, probe) => probe.normal(x, y),
             };
             n.filter(|n| n.iter().all(|c| c.is_finite())).unwrap_or(UP)
         };
