@@ -29,13 +29,10 @@ pub struct SearchHistory {
 }
 
 /// The tiles of a road read in place that a contact point keeps pinned, window `k` of its
-/// [`PlainGrid`] the tile `windows[k]`, and when each was last entered (a count of window
-/// moves). A copy pins nothing.
+/// [`PlainGrid`] the tile `windows[k]`, the one entered last first. A copy pins nothing.
 #[derive(Debug, Default)]
 struct Windows {
     windows: Vec<Window>,
-    used: Vec<u64>,
-    clock: u64,
 }
 
 impl Clone for Windows {
@@ -364,24 +361,18 @@ impl ContactPoint {
         self.uv_to_z_plain(u, v)
     }
 
-    /// Makes the tile of the cell (`iu`, `iv`) a window: a present tile pinned now, in the
-    /// place of the window entered longest ago (unpinned); `None` where the tile is not
-    /// present.
+    /// Makes the tile of the cell (`iu`, `iv`) a window: a present tile pinned now, the
+    /// first window (the one a lookup tests first: a wheel's next points lie on the tile
+    /// it entered last), the others moved one on and the one entered longest ago
+    /// unpinned; `None` where the tile is not present.
     fn enter_window(&mut self, iu: usize, iv: usize) -> Option<()> {
-        let Windows { windows, used, clock } = &mut self.windows;
-        *clock += 1;
-        let window = self.plain.window(self.road.grid.tiles()?.pin(iu, iv)?);
-        let k = if windows.len() < WINDOWS {
-            windows.push(window);
-            used.push(*clock);
-            windows.len() - 1
-        } else {
-            let oldest = (0..WINDOWS).min_by_key(|&k| used[k]).unwrap_or(0);
-            windows[oldest] = window;
-            used[oldest] = *clock;
-            oldest
-        };
-        self.plain.set_window(k, &windows[k]);
+        let windows = &mut self.windows.windows;
+        let window = self.plain.window(self.road.grid.tiles()?.pin(iu, iv)?, windows);
+        windows.insert(0, window);
+        windows.truncate(WINDOWS);
+        for (k, window) in windows.iter().enumerate() {
+            self.plain.set_window(k, window);
+        }
         Some(())
     }
 

@@ -279,18 +279,29 @@ impl PlainGrid {
     /// The window onto the pinned tile `pin` of a grid read in place: the common case
     /// applies to the points whose cells lie in the tile (and in the road's range), found
     /// exactly as [`PlainGrid::cell`] finds them, and reads their values from the tile.
-    pub(crate) fn window(&self, pin: Pin) -> Window {
+    /// The bounds along (across) are those of a window of `near` on the same cross
+    /// (long) sections where there is one: a wheel moving on enters the next tile of the
+    /// same long sections, one weaving the next of the same cross sections.
+    pub(crate) fn window(&self, pin: Pin, near: &[Window]) -> Window {
         let (iu0, iv0) = pin.origin();
         let [u_lo, u_hi, v_lo, v_hi] = self.road;
         let (first_u, first_v) = (iu0 as f64, iv0 as f64);
-        let bounds = [
-            if iu0 == 0 { u_lo } else { at_least(self.u_first, self.u_inc, first_u).max(u_lo) },
-            below(self.u_first, self.u_inc, (first_u + TILE_U as f64).min(self.last.0)).min(u_hi),
-            if iv0 == 0 { v_lo } else { at_least(self.v_first, self.v_inc, first_v).max(v_lo) },
-            below(self.v_first, self.v_inc, (first_v + TILE_V as f64).min(self.last.1)).min(v_hi),
-        ];
+        let along = near.iter().find(|w| w.pin.origin().0 == iu0).map(|w| [w.bounds[0], w.bounds[1]]);
+        let [u_from, u_to] = along.unwrap_or_else(|| {
+            [
+                if iu0 == 0 { u_lo } else { at_least(self.u_first, self.u_inc, first_u).max(u_lo) },
+                below(self.u_first, self.u_inc, (first_u + TILE_U as f64).min(self.last.0)).min(u_hi),
+            ]
+        });
+        let across = near.iter().find(|w| w.pin.origin().1 == iv0).map(|w| [w.bounds[2], w.bounds[3]]);
+        let [v_from, v_to] = across.unwrap_or_else(|| {
+            [
+                if iv0 == 0 { v_lo } else { at_least(self.v_first, self.v_inc, first_v).max(v_lo) },
+                below(self.v_first, self.v_inc, (first_v + TILE_V as f64).min(self.last.1)).min(v_hi),
+            ]
+        });
         let z = pin.values().wrapping_sub(iv0 * TILE_STRIDE + iu0);
-        Window { _pin: pin, bounds, z }
+        Window { pin, bounds: [u_from, u_to, v_from, v_to], z }
     }
 
     /// Makes `window` this grid's window `k` (below [`WINDOWS`]; the caller keeps it as long
@@ -375,7 +386,7 @@ impl PlainGrid {
 #[derive(Debug)]
 pub(crate) struct Window {
     /// Keeps the tile pinned as long as the window lives.
-    _pin: Pin,
+    pin: Pin,
     /// The common case's bounds in the window: u from, u to, v from, v to.
     bounds: [f64; 4],
     /// The tile's values, rebased as [`PlainGrid`] reads them.
