@@ -53,14 +53,15 @@ fn slots(kind: Kind, wheels: u32, of_kind: impl Fn(Quantity) -> bool) -> Slots {
 /// The entry of [`Instance`]'s input table for a reference that names no input.
 const NO_INPUT: u32 = u32::MAX;
 
-/// The input table of an FMU of `kind` with `wheels` wheels: by value reference, the
-/// wheels' input slot ([`Wheels::input_slot`]) of each x and y, [`NO_INPUT`] elsewhere.
-fn input_slots(kind: Kind, wheels: u32) -> Box<[u32]> {
+/// The input table of an FMU of `kind` with `count` wheels: by value reference, the
+/// input slot in `wheels` ([`Wheels::input_slot`]) of each x and y, [`NO_INPUT`]
+/// elsewhere.
+fn input_slots(kind: Kind, count: u32, wheels: &Wheels) -> Box<[u32]> {
     let slot = |vr| {
-        let (wheel, q) = variables::wheel_of(kind, wheels, vr)?;
-        u32::try_from(Wheels::input_slot(wheel as usize - 1, q)?).ok()
+        let (wheel, q) = variables::wheel_of(kind, count, vr)?;
+        u32::try_from(wheels.input_slot(wheel as usize - 1, q)?).ok()
     };
-    (0..variables::wheel_vr(wheels + 1, Quantity::X)).map(|vr| slot(vr).unwrap_or(NO_INPUT)).collect()
+    (0..variables::wheel_vr(count + 1, Quantity::X)).map(|vr| slot(vr).unwrap_or(NO_INPUT)).collect()
 }
 
 /// Stores `values` into the wheels' input slots `inputs` gives their references `vrs`,
@@ -165,7 +166,7 @@ impl Instance {
         let wheels = fmu.wheels(&[]).map_err(|e| e.to_string())?;
         let wheel_count = fmu.config.wheels;
         let reals = slots(kind, wheel_count, |q| q.ty() == Type::Real);
-        let inputs = input_slots(kind, wheel_count);
+        let inputs = input_slots(kind, wheel_count, &wheels);
         Ok(Instance {
             fmu,
             kind,

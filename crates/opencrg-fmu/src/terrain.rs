@@ -175,10 +175,8 @@ enum Evaluator {
     Map(Probe, Probe),
 }
 
-/// One wheel: where it is, its evaluator, its answer.
+/// One wheel: its evaluator, its answer.
 struct Wheel {
-    /// x and y, by [`Quantity::X`] and [`Quantity::Y`].
-    at: [f64; 2],
     evaluator: Evaluator,
     answer: Answer,
     /// Its discrete answers (on the road, road, lane) as of the last event.
@@ -191,6 +189,8 @@ type Discrete = (bool, i32, i32);
 /// The wheels of one FMU instance: their positions and answers.
 pub struct Wheels {
     wheels: Vec<Wheel>,
+    /// The wheels' positions: every x, then every y (see [`Wheels::input_slot`]).
+    at: Vec<f64>,
     /// A CRG file's u and v ranges (the grid: on the road within them).
     ranges: Ranges,
 }
@@ -223,12 +223,7 @@ impl Wheels {
                 }
                 Terrain::Map(surface) => Evaluator::Map(surface.probe(), surface.probe()),
             };
-            wheels.push(Wheel {
-                at: [start.0, start.1],
-                evaluator,
-                answer: Answer::nowhere(),
-                latched: (false, -1, 0),
-            });
+            wheels.push(Wheel { evaluator, answer: Answer::nowhere(), latched: (false, -1, 0) });
         }
         let ranges = match terrain {
             Terrain::Crg(road) => {
@@ -237,7 +232,8 @@ impl Wheels {
             }
             Terrain::Map(_) => [f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY],
         };
-        Ok(Wheels { wheels, ranges })
+        let at = [vec![start.0; count], vec![start.1; count]].concat();
+        Ok(Wheels { wheels, at, ranges })
     }
 
     /// How many wheels.
@@ -254,40 +250,55 @@ impl Wheels {
     /// are ignored).
     #[inline(always)]
     pub fn set(&mut self, i: usize, quantity: Quantity, value: f64) {
-        if let Some(slot) = Wheels::input_slot(i, quantity) {
+        if let Some(slot) = self.input_slot(i, quantity) {
             self.set_slot(slot, value);
         }
     }
 
-    /// The input slot of wheel `i`'s (0-based) x or y: `2 i` and `2 i + 1`.
-    pub fn input_slot(i: usize, quantity: Quantity) -> Option<usize> {
-        quantity.is_input().then(|| 2 * i + quantity as usize)
+    /// The input slot of wheel `i`'s (0-based) x or y: every x first, then every y. (A
+    /// wheel's x and y are not side by side: each is read as the 8 bytes it was written
+    /// as, which the processor forwards from its store to the load at once, where one
+    /// load of both would wait for the two stores to reach the cache.)
+    pub fn input_slot(&self, i: usize, quantity: Quantity) -> Option<usize> {
+        let n = self.wheels.len();
+        match quantity {
+            _ if i >= n => None,
+            Quantity::X => Some(i),
+            Quantity::Y => Some(n + i),
+            _ => None,
+        }
     }
 
     /// Sets the input in `slot` (see [`Wheels::input_slot`]); false where there is no
-    /// such wheel. An answer is computed anew when its wheel's position differs from
-    /// the one it is of.
+    /// such slot. An answer is computed anew when its wheel's position differs from the
+    /// one it is of.
     #[inline(always)]
     pub fn set_slot(&mut self, slot: usize, value: f64) -> bool {
-        match self.wheels.get_mut(slot / 2) {
-            Some(wheel) => {
-                wheel.at[slot % 2] = value;
+        match self.at.get_mut(slot) {
+            Some(place) => {
+                *place = value;
                 true
             }
             None => false,
         }
     }
 
+    /// Wheel `i`'s (0-based) x and y.
+    #[inline(always)]
+    fn position(&self, i: usize) -> [f64; 2] {
+        [self.at[i], self.at[self.wheels.len() + i]]
+    }
+
     /// A Real quantity of wheel `i` (0-based): its input, or its answer, computed if the
     /// wheel moved; `friction_default` where the road gives no friction.
     #[inline(always)]
     pub fn real(&mut self, i: usize, quantity: Quantity, friction_default: f64) -> f64 {
-        let wheel = &mut self.wheels[i];
-        let at = wheel.at;
+        let at = self.position(i);
         match quantity {
             Quantity::X | Quantity::Y => return at[quantity as usize],
             _ => {}
         }
+        let wheel = &mut self.wheels[i];
         wheel.base(at, &self.ranges);
         if quantity == Quantity::Z {
             return wheel.answer.z;
@@ -298,8 +309,9 @@ impl Wheels {
     /// An Integer quantity of wheel `i` (0-based): a map's road and lane.
     #[inline]
     pub fn integer(&mut self, i: usize, quantity: Quantity) -> i32 {
+        let at = self.position(i);
         let wheel = &mut self.wheels[i];
-        wheel.base(wheel.at, &self.ranges);
+        wheel.base(at, &self.ranges);
         match quantity {
             Quantity::Road => wheel.answer.road,
             Quantity::Lane => wheel.answer.lane,
@@ -310,16 +322,19 @@ impl Wheels {
     /// Whether wheel `i` (0-based) is on the road.
     #[inline]
     pub fn on_road(&mut self, i: usize) -> bool {
+        let at = self.position(i);
         let wheel = &mut self.wheels[i];
-        wheel.base(wheel.at, &self.ranges);
+        wheel.base(at, &self.ranges);
         wheel.answer.on_road
     }
 
     /// Every wheel's discrete answers (on the road, road, lane) as they are now become
     /// those of the last event (model exchange: at initialization and at each event).
     pub fn latch(&mut self) {
-        for wheel in &mut self.wheels {
-            wheel.base(wheel.at, &self.ranges);
+        for i in 0..self.wheels.len() {
+            let at = self.position(i);
+            let wheel = &mut self.wheels[i];
+            wheel.base(at, &self.ranges);
             wheel.latched = wheel.discrete();
         }
     }
