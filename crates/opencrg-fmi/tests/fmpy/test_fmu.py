@@ -329,6 +329,17 @@ def test_a_get_after_a_set_answers_at_once_and_bad_calls_are_refused(work):
         slave.setReal([vr["wheel[2].x"], vr["wheel[2].y"]], [x, y])
         # No step between the set and the get.
         assert slave.getReal([vr["wheel[2].z"], vr["wheel[2].u"]]) == [probe(x, y)["z"], probe(x, y)["u"]]
+    # One call naming wheel variables and a parameter, the parameter between them: each
+    # taken in turn (the wheels' references by their tables, the rest the other way).
+    x, y = 233.0, 157.0
+    slave.setReal([vr["wheel[2].x"], vr["frictionDefault"], vr["wheel[2].y"]], [x, 0.7, y])
+    got = slave.getReal([vr["wheel[2].z"], vr["frictionDefault"], vr["wheel[2].u"], vr["wheel[2].y"]])
+    assert got == [probe(x, y)["z"], 0.7, probe(x, y)["u"], y]
+    # The same position set again keeps the answer; another one gives its own.
+    slave.setReal([vr["wheel[2].x"], vr["wheel[2].y"]], [x, y])
+    assert slave.getReal([vr["wheel[2].z"]]) == [probe(x, y)["z"]]
+    slave.setReal([vr["wheel[2].y"]], [y + 1.0])
+    assert slave.getReal([vr["wheel[2].z"]]) == [probe(x, y + 1.0)["z"]]
     slave.setReal([vr["wheel[3].x"]], [float("nan")])
     assert slave.getBoolean([vr["wheel[3].onRoad"]]) == [False]
     assert slave.getReal([vr["wheel[3].z"], vr["wheel[3].nz"]]) == [0.0, 1.0]
