@@ -289,17 +289,23 @@ impl Wheels {
         [self.at[i], self.at[self.wheels.len() + i]]
     }
 
+    /// Wheel `i` (0-based) with its base answer at its position known, and that position.
+    #[inline(always)]
+    fn answered(&mut self, i: usize) -> (&mut Wheel, [f64; 2]) {
+        let at = self.position(i);
+        let wheel = &mut self.wheels[i];
+        wheel.base(at, &self.ranges);
+        (wheel, at)
+    }
+
     /// A Real quantity of wheel `i` (0-based): its input, or its answer, computed if the
     /// wheel moved; `friction_default` where the road gives no friction.
     #[inline(always)]
     pub fn real(&mut self, i: usize, quantity: Quantity, friction_default: f64) -> f64 {
-        let at = self.position(i);
-        match quantity {
-            Quantity::X | Quantity::Y => return at[quantity as usize],
-            _ => {}
+        if let Quantity::X | Quantity::Y = quantity {
+            return self.position(i)[quantity as usize];
         }
-        let wheel = &mut self.wheels[i];
-        wheel.base(at, &self.ranges);
+        let (wheel, at) = self.answered(i);
         if quantity == Quantity::Z {
             return wheel.answer.z;
         }
@@ -309,9 +315,7 @@ impl Wheels {
     /// An Integer quantity of wheel `i` (0-based): a map's road and lane.
     #[inline]
     pub fn integer(&mut self, i: usize, quantity: Quantity) -> i32 {
-        let at = self.position(i);
-        let wheel = &mut self.wheels[i];
-        wheel.base(at, &self.ranges);
+        let (wheel, _) = self.answered(i);
         match quantity {
             Quantity::Road => wheel.answer.road,
             Quantity::Lane => wheel.answer.lane,
@@ -322,19 +326,14 @@ impl Wheels {
     /// Whether wheel `i` (0-based) is on the road.
     #[inline]
     pub fn on_road(&mut self, i: usize) -> bool {
-        let at = self.position(i);
-        let wheel = &mut self.wheels[i];
-        wheel.base(at, &self.ranges);
-        wheel.answer.on_road
+        self.answered(i).0.answer.on_road
     }
 
     /// Every wheel's discrete answers (on the road, road, lane) as they are now become
     /// those of the last event (model exchange: at initialization and at each event).
     pub fn latch(&mut self) {
         for i in 0..self.wheels.len() {
-            let at = self.position(i);
-            let wheel = &mut self.wheels[i];
-            wheel.base(at, &self.ranges);
+            let (wheel, _) = self.answered(i);
             wheel.latched = wheel.discrete();
         }
     }
@@ -348,9 +347,10 @@ impl Wheels {
 impl Wheel {
     /// Computes the base answer if the wheel moved since: found where the road answers
     /// the height and the wheel is on the road (within a CRG file's grid, on a map's
-    /// road); a CRG file's u and v wherever its search answers. A CRG file's common case
-    /// (the lean search and the plain elevation, as `crgEvalxy2z` takes it) is inline,
-    /// every other case in [`Wheel::base_otherwise`].
+    /// road); a CRG file's u and v wherever its search answers. Only the check of the
+    /// position is inline; [`Wheel::compute`] takes a CRG file's common case (the lean
+    /// search and the plain elevation, as `crgEvalxy2z` does) first, every other case in
+    /// [`Wheel::base_found`] and [`Wheel::base_otherwise`].
     #[inline(always)]
     fn base(&mut self, at: [f64; 2], ranges: &Ranges) {
         let of = Some(at.map(f64::to_bits));
@@ -401,8 +401,6 @@ impl Wheel {
                     answered: true,
                     z: g.z,
                     friction: g.friction,
-                    a: g.s,
-                    b: g.t,
                     road: i32::try_from(g.road).unwrap_or(i32::MAX),
                     lane: g.lane,
                     ..Answer::located(g.s, g.t)
