@@ -14,8 +14,8 @@
 # import library) and from the Linux archives (glibc 2.17, zig; the aarch64 one under
 # qemu), with CMake and pkg-config consumers, and each platform's FMU binary through a C
 # host of the project's own; FMUs driven by FMPy (FMI 2 and 3, co-simulation and model
-# exchange) against the C API; the npm package (WebAssembly) in Node and its web page in
-# headless Chromium; the .glb export against the Khronos
+# exchange), ECOS and libcosim against the C API; the npm package (WebAssembly) in Node
+# and its web page in headless Chromium; the .glb export against the Khronos
 # glTF validator, the 3D view in headless Chromium; last the Python package: its
 # manylinux2014 wheel built with maturin and zig, installed into a fresh virtual
 # environment without cargo, and its pytest suite (pickling, multiprocessing, Dask); the
@@ -48,7 +48,7 @@ venv() {
 environments() {
     rustup toolchain install "$msrv" --profile minimal >/dev/null
     rustup toolchain install "$nightly" --profile minimal --component miri,rust-src >/dev/null
-    venv fmu-venv "fmpy>=0.3.20,<0.4" numpy pytest
+    venv fmu-venv "fmpy>=0.3.20,<0.4" "ecospy>=0.7,<0.8" "libcosimpy>=0.0.6,<0.1" numpy pytest
     venv python-build "maturin[zig]>=1.7,<2"
     env PATH="$no_cargo" sh -c '! command -v cargo >/dev/null'
     (PATH="$no_cargo" && venv python-venv numpy pytest "dask[distributed]" pyproj matplotlib fmpy)
@@ -139,10 +139,11 @@ c-tests/cross/run.sh linux
 step "FMU"
 # The FMUs as users drive them: FMPy (from PyPI) validates and simulates FMUs of a CRG
 # file and of shared maps with CRG records in every mode, FMI 2 and 3, co-simulation and
-# model exchange, against the C API and `opencrg odr eval` to the bit (the C host of
-# c-tests/fmu drove each platform's binary in the cross runs above).
+# model exchange, against the C API and `opencrg odr eval` to the bit; ECOS (FMI 2 and 3)
+# and libcosim (FMI 2) run an FMU of a CRG file and one of a map in one system (the C
+# host of c-tests/fmu drove each platform's binary in the cross runs above).
 OPENCRG_CLI="$PWD/target/release/opencrg" OPENCRG_LIB="$PWD/target/release/libopencrg.so" \
-    target/fmu-venv/bin/python -m pytest -q -p no:cacheprovider crates/opencrg-fmi/tests/fmpy
+    target/fmu-venv/bin/python -m pytest -q -p no:cacheprovider crates/opencrg-fmi/tests/importers
 step "WebAssembly"
 # The npm package and the web page (packaging/wasm.sh): the conformance suite's client in
 # JavaScript in both profiles, the API, a shared map with CRG records in every mode

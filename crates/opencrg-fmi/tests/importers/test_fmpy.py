@@ -79,16 +79,19 @@ def road_xy(path):
 
 
 def crg_oracle(path):
-    """A function of (x, y) giving the CRG file's answers as the FMU documents them."""
+    """A function of (x, y) giving the CRG file's answers as the FMU documents them: u and v
+    of a contact point asked only crgEvalxy2uv at the wheel's positions in turn, z of one
+    asked only crgEvalxy2z (a search starts where the contact point's last one ended, so
+    that a second search at the same x/y may end a bit away from the first)."""
     data = capi.crgLoaderReadFile(str(path).encode())
     assert data > 0 and capi.crgCheck(data) == 1
     capi.crgDataSetModifiersApply(data)
-    cp = capi.crgContactPointCreate(data)
+    cp, z_cp = capi.crgContactPointCreate(data), capi.crgContactPointCreate(data)
     u, v, z, phi, curv = D(), D(), D(), D(), D()
 
     def answer(x, y):
         found = capi.crgEvalxy2uv(cp, x, y, ctypes.byref(u), ctypes.byref(v)) == 1
-        height = capi.crgEvalxy2z(cp, x, y, ctypes.byref(z)) == 1 and math.isfinite(z.value)
+        height = capi.crgEvalxy2z(z_cp, x, y, ctypes.byref(z)) == 1 and math.isfinite(z.value)
         pk = found and capi.crgEvaluv2pk(cp, u.value, v.value, ctypes.byref(phi), ctypes.byref(curv)) == 1
         return {
             "u": u.value if found else 0.0,
