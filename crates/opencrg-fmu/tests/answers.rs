@@ -1,8 +1,9 @@
 //! The wheels answer what the C API's calls answer: on a CRG file, (u, v) of
-//! `crgEvalxy2uv`, z of `crgEvalxy2z` and heading and curvature of `crgEvaluv2pk`, each
-//! made in turn on one contact point as a program would (here the evaluator's own
-//! contact point, which the C API wraps), to the bit, along paths over the road and off
-//! it; on a map, what a probe of its own answers.
+//! `crgEvalxy2uv` and heading and curvature of `crgEvaluv2pk` at them, made in turn on
+//! one contact point as a program would, and z of `crgEvalxy2z` on another (here the
+//! evaluator's own contact points, which the C API wraps: a search starts where the
+//! contact point's last one ended, and a wheel searches once a position), to the bit,
+//! along paths over the road and off it; on a map, what a probe of its own answers.
 
 use opencrg_core::{Compat, ContactPoint};
 use opencrg_fmu::{Quantity, Terrain, Wheels};
@@ -30,21 +31,22 @@ fn same(a: f64, b: f64) -> bool {
     a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan())
 }
 
-/// One CRG file: the first wheel against a contact point making the C API's calls.
+/// One CRG file: the first wheel against contact points making the C API's calls.
 fn crg_agrees(file: &Path) -> usize {
     let terrain = Terrain::load_crg(file, Compat::default()).unwrap();
     let Terrain::Crg(road) = &terrain else { unreachable!() };
     let mut wheels = Wheels::new(&terrain, 2, (0.0, 0.0), &[]).unwrap();
-    let mut cp = ContactPoint::new(road.clone());
+    let (mut cp, mut z_cp) = (ContactPoint::new(road.clone()), ContactPoint::new(road.clone()));
     let points = path(road, 400);
     let mut on = 0;
     for &(x, y) in &points {
         wheels.set(0, Quantity::X, x);
         wheels.set(0, Quantity::Y, y);
         // The C API's answers; 0 where it refuses.
-        let (u, v) = cp.xy_to_uv(x, y).unwrap_or((0.0, 0.0));
-        let z = cp.xy_to_z(x, y).ok().filter(|z| z.is_finite()).unwrap_or(0.0);
-        let (phi, curv) = cp.xy_to_uv(x, y).and_then(|(u, v)| cp.uv_to_pk(u, v)).unwrap_or((0.0, 0.0));
+        let found = cp.xy_to_uv(x, y).ok();
+        let (u, v) = found.unwrap_or((0.0, 0.0));
+        let z = z_cp.xy_to_z(x, y).ok().filter(|z| z.is_finite()).unwrap_or(0.0);
+        let (phi, curv) = found.and_then(|(u, v)| cp.uv_to_pk(u, v).ok()).unwrap_or((0.0, 0.0));
         let got = [Quantity::U, Quantity::V, Quantity::Z, Quantity::Heading, Quantity::Curvature]
             .map(|q| wheels.real(0, q, 1.0));
         for (q, (g, want)) in ["u", "v", "z", "heading", "curvature"].iter().zip(got.iter().zip([u, v, z, phi, curv])) {
