@@ -127,15 +127,21 @@ rm -rf target/generated-suite
 for profile in current 2.0.1; do
     CONFORMANCE_PROFILE=$profile c-tests/generated/make_suite.sh target/generated-suite target/release/libopencrg.so
 done
-# The other platforms, Windows and Arm side by side (one's emulated tests run while the
-# other builds; their builds take turns on cargo's lock), then the Linux archive.
-c-tests/cross/run.sh arm >target/cross-arm.log 2>&1 &
+# The other platforms (Windows, Arm), the Linux archive and the npm package's build side
+# by side, each cargo build in a target folder of its own (in one folder they would take
+# turns on cargo's lock): a release build's link-time optimisation runs on one core, and
+# the emulated tests on one.
+CARGO_TARGET_DIR="$PWD/target/build-wasm" packaging/wasm.sh target/wasm-dist >target/wasm-build.log 2>&1 &
+wasm_build=$!
+CARGO_TARGET_DIR="$PWD/target/build-arm" c-tests/cross/run.sh arm >target/cross-arm.log 2>&1 &
 arm=$!
+CARGO_TARGET_DIR="$PWD/target/build-linux" c-tests/cross/run.sh linux >target/cross-linux.log 2>&1 &
+linux=$!
 c-tests/cross/run.sh windows
-wait "$arm" || { cat target/cross-arm.log; exit 1; }
-cat target/cross-arm.log
-step "C tests: the Linux archive"
-c-tests/cross/run.sh linux
+for platform in arm linux; do
+    wait "${!platform}" || { cat "target/cross-$platform.log"; exit 1; }
+    cat "target/cross-$platform.log"
+done
 step "FMU"
 # The FMUs as users drive them: FMPy (from PyPI) validates and simulates FMUs of a CRG
 # file and of shared maps with CRG records in every mode, FMI 2 and 3, co-simulation and
@@ -156,7 +162,8 @@ if cargo tree -q -p opencrg-wasm --target wasm32-unknown-unknown -e normal --pre
     echo "the WebAssembly build pulls the crates above" >&2
     exit 1
 fi
-packaging/wasm.sh target/wasm-dist
+wait "$wasm_build" || { cat target/wasm-build.log; exit 1; }
+cat target/wasm-build.log
 for profile in current 2.0.1; do
     golden=golden; [ $profile = current ] || golden=golden-$profile
     node packaging/npm/test/conformance.mjs target/wasm-dist/package ../shared/conformance target/wasm-conformance-$profile $profile

@@ -21,15 +21,21 @@ aarch64) objdump=aarch64-linux-gnu-objdump ;;
 esac
 glibc=2.17
 version=$(sed -n 's/^version = "\([0-9.]*\)"$/\1/p' Cargo.toml | head -1)
-if [ ! -x target/zig-build/bin/cargo-zigbuild ]; then
-    python3 -m venv target/zig-build
-    target/zig-build/bin/pip install -q --upgrade pip
-    target/zig-build/bin/pip install -q "cargo-zigbuild>=0.19,<1" "ziglang>=0.13,<1"
-fi
+# (Made once, under a lock: the two architectures' archives may be built at once.)
+mkdir -p target
+(
+    flock 9
+    if [ ! -x target/zig-build/bin/cargo-zigbuild ]; then
+        python3 -m venv target/zig-build
+        target/zig-build/bin/pip install -q --upgrade pip
+        target/zig-build/bin/pip install -q "cargo-zigbuild>=0.19,<1" "ziglang>=0.13,<1"
+    fi
+) 9>target/zig-build.lock
 # (cargo-zigbuild finds zig through the `python` first on PATH: the build environment's.)
 env PATH="$PWD/target/zig-build/bin:$PATH" cargo zigbuild -q --release --target "$arch-unknown-linux-gnu.$glibc" \
     -p opencrg-capi -p opencrg-cli -p opencrg-fmi
-built="$PWD/target/$arch-unknown-linux-gnu/release"
+# (cargo builds where CARGO_TARGET_DIR says, if it says.)
+built="$(realpath -m "${CARGO_TARGET_DIR:-target}")/$arch-unknown-linux-gnu/release"
 name="opencrg-$version-linux-$arch"
 stage="$PWD/target/dist/$name"
 rm -rf "$stage" "$stage.tar.gz" "target/dist/$name-cmake"

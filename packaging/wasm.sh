@@ -22,7 +22,7 @@ cargo build -q --release --target wasm32-unknown-unknown -p opencrg-wasm
 rm -rf "$out/package" "$out/web" "$out"/opencrg-*.tgz
 mkdir -p "$out/package"
 "$bindgen" --target web --out-dir "$out/package" --out-name opencrg --no-typescript \
-    target/wasm32-unknown-unknown/release/opencrg_wasm.wasm
+    "${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/release/opencrg_wasm.wasm"
 cp packaging/npm/index.js packaging/npm/index.d.ts packaging/npm/README.md LICENSE "$out/package/"
 sed "s/\"version\": \"0.0.0\"/\"version\": \"$version\"/" packaging/npm/package.json >"$out/package/package.json"
 (cd "$out" && npm pack --silent ./package >/dev/null)

@@ -10,7 +10,8 @@ cd "$(dirname "$0")/.."
 target=x86_64-pc-windows-gnu
 version=$(sed -n 's/^version = "\([0-9.]*\)"$/\1/p' Cargo.toml | head -1)
 cargo build --release --target "$target" -p opencrg-capi -p opencrg-cli -p opencrg-fmi
-built="target/$target/release"
+# (cargo builds where CARGO_TARGET_DIR says, if it says.)
+built="${CARGO_TARGET_DIR:-target}/$target/release"
 name="opencrg-$version-windows-x86_64"
 stage="target/dist/$name"
 rm -rf "$stage" "$stage.zip"
