@@ -40,7 +40,7 @@ def positions(crg_xy, map_xy):
 
 @pytest.fixture(scope="module")
 def system(work):
-    """The two roads' FMUs and their answers as the C API gives them."""
+    """The two roads (a CRG file, a map with CRG records) and the wheels' positions step by step."""
     crg = work / "rough.crg"
     odr = map_with(work, "importers", MODES["genuine"] + FRICTION)
     crg_xy = road_xy(crg)
@@ -49,6 +49,9 @@ def system(work):
         return road_points(odr, 0, [s], [t])[0]
 
     return {"crg": crg, "odr": odr, "steps": positions(crg_xy, map_xy)}
+
+
+QUANTITIES = {"crg": CRG_QUANTITIES, "map": MAP_QUANTITIES}
 
 
 def check_step(step, got_crg, got_map, on_road_crg, on_road_map, crg_probes, map_probes):
@@ -69,6 +72,23 @@ def check_step(step, got_crg, got_map, on_road_crg, on_road_map, crg_probes, map
             assert not on_road_crg[i] and not on_road_map[i], (i, x, y)
 
 
+def drive(system, place, advance, read):
+    """Both FMUs through the steps in an engine: `place(model, step)` sets a model's
+    wheels, `advance()` steps the engine, `read(model)` gives the model's quantities
+    (`QUANTITIES`) of each wheel and each wheel's onRoad; every step checked."""
+    crg_probes = [crg_oracle(system["crg"]) for _ in range(WHEELS)]
+    map_probes = [map_oracle(system["odr"], FRICTION_DEFAULT) for _ in range(WHEELS)]
+    on_road = 0
+    for step in system["steps"]:
+        for model in QUANTITIES:
+            place(model, step)
+        advance()
+        (got_crg, crg_flags), (got_map, map_flags) = read("crg"), read("map")
+        check_step(step, got_crg, got_map, crg_flags, map_flags, crg_probes, map_probes)
+        on_road += sum(crg_flags)
+    assert on_road >= 40 * WHEELS * 0.5, on_road
+
+
 @pytest.mark.parametrize("fmi", [2, 3])
 def test_ecos_runs_fmus_of_two_roads_in_one_system(work, system, fmi):
     from ecospy import EcosSimulation, EcosSimulationStructure
@@ -76,39 +96,30 @@ def test_ecos_runs_fmus_of_two_roads_in_one_system(work, system, fmi):
     structure = EcosSimulationStructure()
     structure.add_model("crg", str(pack(system["crg"], work / f"ecos_crg{fmi}.fmu", fmi)))
     structure.add_model("map", str(pack(system["odr"], work / f"ecos_map{fmi}.fmu", fmi)))
-    crg_probes = [crg_oracle(system["crg"]) for _ in range(WHEELS)]
-    map_probes = [map_oracle(system["odr"], FRICTION_DEFAULT) for _ in range(WHEELS)]
-    on_road = 0
     with EcosSimulation(structure=structure, step_size=0.01) as sim:
+
+        def place(model, step):
+            for i, (x, y) in enumerate(step, 1):
+                sim.set_real(f"{model}::wheel[{i}].x", x)
+                sim.set_real(f"{model}::wheel[{i}].y", y)
+
+        def value(model, i, q):
+            name = f"{model}::wheel[{i}].{q}"
+            return float(sim.get_integer(name)) if q == "lane" else sim.get_real(name)
+
+        def read(model):
+            wheels = range(1, WHEELS + 1)
+            return ([{q: value(model, i, q) for q in QUANTITIES[model]} for i in wheels],
+                    [sim.get_bool(f"{model}::wheel[{i}].onRoad") for i in wheels])
+
         sim.set_real("map::frictionDefault", FRICTION_DEFAULT)
         # The wheels start where the first step puts them: the engine reads the outputs
         # at initialisation, and a wheel's search starts from where it was last asked.
-        for model in ("crg", "map"):
-            for i, (x, y) in enumerate(system["steps"][0], 1):
-                sim.set_real(f"{model}::wheel[{i}].x", x)
-                sim.set_real(f"{model}::wheel[{i}].y", y)
+        for model in QUANTITIES:
+            place(model, system["steps"][0])
         sim.init()
-        for step in system["steps"]:
-            for model in ("crg", "map"):
-                for i, (x, y) in enumerate(step, 1):
-                    sim.set_real(f"{model}::wheel[{i}].x", x)
-                    sim.set_real(f"{model}::wheel[{i}].y", y)
-            sim.step()
-
-            def reals(model, quantities):
-                return [{q: float(sim.get_integer(f"{model}::wheel[{i}].{q}")) if q == "lane"
-                         else sim.get_real(f"{model}::wheel[{i}].{q}") for q in quantities}
-                        for i in range(1, WHEELS + 1)]
-
-            def flags(model):
-                return [sim.get_bool(f"{model}::wheel[{i}].onRoad") for i in range(1, WHEELS + 1)]
-
-            crg_flags = flags("crg")
-            check_step(step, reals("crg", CRG_QUANTITIES), reals("map", MAP_QUANTITIES), crg_flags, flags("map"),
-                       crg_probes, map_probes)
-            on_road += sum(crg_flags)
+        drive(system, place, sim.step, read)
         sim.terminate()
-    assert on_road >= 40 * WHEELS * 0.5, on_road
 
 
 def test_libcosim_runs_fmus_of_two_roads_in_one_system(work, system):
@@ -128,35 +139,26 @@ def test_libcosim_runs_fmus_of_two_roads_in_one_system(work, system):
     manipulator, observer = CosimManipulator.create_override(), CosimObserver.create_last_value()
     assert execution.add_manipulator(manipulator) and execution.add_observer(observer)
     assert execution.real_initial_value(index["map"], refs["map"]["frictionDefault"], FRICTION_DEFAULT)
-    for model in ("crg", "map"):
+    for model in QUANTITIES:
         for i, (x, y) in enumerate(system["steps"][0], 1):
             assert execution.real_initial_value(index[model], refs[model][f"wheel[{i}].x"], x)
             assert execution.real_initial_value(index[model], refs[model][f"wheel[{i}].y"], y)
-    crg_probes = [crg_oracle(system["crg"]) for _ in range(WHEELS)]
-    map_probes = [map_oracle(system["odr"], FRICTION_DEFAULT) for _ in range(WHEELS)]
-    on_road = 0
-    for step in system["steps"]:
-        for model in ("crg", "map"):
-            vrs = [refs[model][f"wheel[{i}].{c}"] for i in range(1, WHEELS + 1) for c in "xy"]
-            assert manipulator.slave_real_values(index[model], vrs, [c for xy in step for c in xy])
+
+    def vrs(model, q):
+        return [refs[model][f"wheel[{i}].{q}"] for i in range(1, WHEELS + 1)]
+
+    def place(model, step):
+        xy = [refs[model][f"wheel[{i}].{c}"] for i in range(1, WHEELS + 1) for c in "xy"]
+        assert manipulator.slave_real_values(index[model], xy, [c for at in step for c in at])
+
+    def read(model):
+        # libcosim reads an FMU's outputs after its step; lane is an Integer in FMI 2.
+        columns = {q: observer.last_integer_values(index[model], vrs(model, q)) if q == "lane"
+                   else observer.last_real_values(index[model], vrs(model, q)) for q in QUANTITIES[model]}
+        wheels = [{q: float(columns[q][i]) for q in QUANTITIES[model]} for i in range(WHEELS)]
+        return wheels, list(observer.last_boolean_values(index[model], vrs(model, "onRoad")))
+
+    def advance():
         assert execution.step()
 
-        def reals(model, quantities):
-            vrs = [refs[model][f"wheel[{i}].{q}"] for i in range(1, WHEELS + 1) for q in quantities]
-            values = iter(observer.last_real_values(index[model], vrs))
-            return [{q: next(values) for q in quantities} for _ in range(WHEELS)]
-
-        def flags(model):
-            vrs = [refs[model][f"wheel[{i}].onRoad"] for i in range(1, WHEELS + 1)]
-            return list(observer.last_boolean_values(index[model], vrs))
-
-        # libcosim reads an FMU's outputs after its step; lane is an Integer in FMI 2.
-        got_map = reals("map", [q for q in MAP_QUANTITIES if q != "lane"])
-        lanes = observer.last_integer_values(index["map"], [refs["map"][f"wheel[{i}].lane"]
-                                                            for i in range(1, WHEELS + 1)])
-        for got, lane in zip(got_map, lanes):
-            got["lane"] = float(lane)
-        crg_flags = flags("crg")
-        check_step(step, reals("crg", CRG_QUANTITIES), got_map, crg_flags, flags("map"), crg_probes, map_probes)
-        on_road += sum(crg_flags)
-    assert on_road >= 40 * WHEELS * 0.5, on_road
+    drive(system, place, advance, read)

@@ -227,6 +227,20 @@ def simulate(fmu, fmi_type, table, outputs, start_values=None):
                              output_interval=DT, stop_time=stop, start_values=start_values or {})
 
 
+def instantiated(md, unzipped, fmi, said):
+    """A co-simulation instance of FMI `fmi` whose messages are appended to `said`
+    (instantiation's refusal raised)."""
+    if fmi == 2:
+        callbacks = fmi2CallbackFunctions()
+        callbacks.logger = fmi2CallbackLoggerTYPE(lambda env, name, status, cat, msg: said.append(msg.decode()))
+        slave = FMU2Slave(guid=md.guid, unzipDirectory=unzipped, modelIdentifier=md.coSimulation.modelIdentifier)
+        slave.instantiate(callbacks=callbacks)
+    else:
+        slave = FMU3Slave(guid=md.guid, unzipDirectory=unzipped, modelIdentifier=md.coSimulation.modelIdentifier)
+        slave.instantiate(logMessage=lambda env, status, cat, msg: said.append(msg.decode()))
+    return slave
+
+
 def same(a, b):
     return (isinstance(a, float) and isinstance(b, float) and math.isnan(a) and math.isnan(b)) or a == b
 
@@ -434,23 +448,14 @@ def test_an_fmu_lacking_its_crg_file_is_refused_at_instantiation(work, fmi):
     md = fmpy.read_model_description(str(broken))
     unzipped = fmpy.extract(str(broken))
     said = []
-    if fmi == 2:
-        callbacks = fmi2CallbackFunctions()
-        callbacks.logger = fmi2CallbackLoggerTYPE(lambda env, name, status, cat, msg: said.append(msg.decode()))
-        slave = FMU2Slave(guid=md.guid, unzipDirectory=unzipped, modelIdentifier=md.coSimulation.modelIdentifier)
-        with pytest.raises(Exception):
-            slave.instantiate(callbacks=callbacks)
-    else:
-        slave = FMU3Slave(guid=md.guid, unzipDirectory=unzipped, modelIdentifier=md.coSimulation.modelIdentifier)
-        with pytest.raises(Exception):
-            slave.instantiate(logMessage=lambda env, status, cat, msg: said.append(msg.decode()))
+    with pytest.raises(Exception):
+        instantiated(md, unzipped, fmi, said)
     assert len(said) == 1 and "flat.crg" in said[0] and "cannot read" in said[0], said
     # The process goes on: the whole FMU still simulates.
     table = wheel_path(lambda s, t: road_points(path, 0, [s], [t])[0], n=20)
     result = simulate(str(whole), "CoSimulation", table, ["wheel[1].onRoad"])
     assert result["wheel[1].onRoad"].all()
     shutil.rmtree(unzipped, ignore_errors=True)
-
 
 
 @pytest.mark.parametrize("fmi", [2, 3])
@@ -486,15 +491,9 @@ def test_a_road_left_outside_the_fmu_is_read_in_place_where_it_lies(work, fmi, m
     road.rename(moved)
     unzipped = fmpy.extract(str(fmu))
     said = []
+    slave = instantiated(md, unzipped, fmi, said)
     if fmi == 2:
-        callbacks = fmi2CallbackFunctions()
-        callbacks.logger = fmi2CallbackLoggerTYPE(lambda env, name, status, cat, msg: said.append(msg.decode()))
-        slave = FMU2Slave(guid=md.guid, unzipDirectory=unzipped, modelIdentifier=md.coSimulation.modelIdentifier)
-        slave.instantiate(callbacks=callbacks)
         slave.setupExperiment()
-    else:
-        slave = FMU3Slave(guid=md.guid, unzipDirectory=unzipped, modelIdentifier=md.coSimulation.modelIdentifier)
-        slave.instantiate(logMessage=lambda env, status, cat, msg: said.append(msg.decode()))
     with pytest.raises(Exception):
         slave.enterInitializationMode()
     assert any(road.name in m and "roadFile" in m for m in said), said
