@@ -59,15 +59,31 @@ environments() {
 mkdir -p target
 environments >target/environments.log 2>&1 &
 environments_job=$!
+# The oracles of the OpenDRIVE tests, built outside the project while the checks compile:
+# libOpenDRIVE (../shared/oracles/build-libopendrive.sh, for the geometry of every road of
+# ../shared/opendrive) and the reference C library (../shared/reference/build-references.sh,
+# for the CRG records of every mode), each with the small program the tests ask.
+oracles() {
+    ../shared/oracles/build-libopendrive.sh "$PWD/target/libopendrive" >/dev/null
+    g++ -O2 -std=c++17 -I target/libopendrive/include crates/opencrg-odr/tests/oracle/libopendrive_answers.cpp \
+        -L target/libopendrive/lib -lOpenDrive -lpugixml -o target/libopendrive/answers
+    ../shared/reference/build-references.sh "$PWD/target/crgref" >/dev/null
+    cc -O2 -I target/crgref/up crates/opencrg-odr/tests/oracle/crg_reference_answers.c target/crgref/up/libOpenCRG.so \
+        -lm -Wl,-rpath,"$PWD/target/crgref/up" -o target/crgref/answers
+}
+oracles >target/oracles.log 2>&1 &
+oracles_job=$!
 cargo fmt --all --check
 cargo clippy --workspace --all-targets -- -D warnings
 RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps
 step "Rust tests"
-# Every test, with the ones that read ../shared (ignored in a plain clone), each in its
-# own process and the test programs side by side (cargo-nextest); the oracles' tests
-# run below, against their oracles. Then the doctests (the README's among them).
-oracles='binary(=libopendrive) | binary(=crg_reference)'
-cargo nextest run --workspace --run-ignored all -E "not ($oracles)" --status-level fail --final-status-level slow
+# Every test, with the ones that read ../shared (ignored in a plain clone) and those that
+# ask the oracles, each in its own process and the test programs side by side
+# (cargo-nextest; .config/nextest.toml prints what the oracles' tests measured). Then the
+# doctests (the README's among them).
+wait "$oracles_job" || { cat target/oracles.log; echo "test.sh: building the oracles failed" >&2; exit 1; }
+OPENCRG_ODR_ORACLE="$PWD/target/libopendrive/answers" OPENCRG_CRG_REFERENCE="$PWD/target/crgref/answers" \
+    cargo nextest run --workspace --run-ignored all --status-level fail --final-status-level slow
 cargo test --workspace --doc
 # The maps' wheel queries, the FMU's answers and the files the toolkit writes once more
 # with every binary road read in place (the maps' CRG files are KDBI): the answers they
@@ -100,20 +116,11 @@ MIRIFLAGS="-Zmiri-many-seeds=0..4" cargo "+$nightly" miri test -p opencrg-sys --
 step "fuzzing"
 # Every fuzz target for 10 s from its seeds (stable toolchain, under 4 GB of address space).
 fuzz/run.sh 10
-step "OpenDRIVE oracles"
-# OpenDRIVE geometry: every road of ../shared/opendrive against libOpenDRIVE, built
-# outside the project by ../shared/oracles/build-libopendrive.sh.
-../shared/oracles/build-libopendrive.sh "$PWD/target/libopendrive" >/dev/null
-g++ -O2 -std=c++17 -I target/libopendrive/include crates/opencrg-odr/tests/oracle/libopendrive_answers.cpp \
-    -L target/libopendrive/lib -lOpenDrive -lpugixml -o target/libopendrive/answers
-# The CRG records of every mode against the reference C library, built outside the
-# project by ../shared/reference/build-references.sh.
-../shared/reference/build-references.sh "$PWD/target/crgref" >/dev/null
-cc -O2 -I target/crgref/up crates/opencrg-odr/tests/oracle/crg_reference_answers.c target/crgref/up/libOpenCRG.so \
-    -lm -Wl,-rpath,"$PWD/target/crgref/up" -o target/crgref/answers
-OPENCRG_ODR_ORACLE="$PWD/target/libopendrive/answers" OPENCRG_CRG_REFERENCE="$PWD/target/crgref/answers" \
-    cargo test --release -p opencrg-odr --test libopendrive --test crg_reference -- --include-ignored --nocapture
 step "C tests"
+# The npm package's build (packaging/wasm.sh, in a target folder of its own) runs from
+# here on beside the native builds and tests: it needs none of them.
+CARGO_TARGET_DIR="$PWD/target/build-wasm" packaging/wasm.sh target/wasm-dist >target/wasm-build.log 2>&1 &
+wasm_build=$!
 cargo build --release -p opencrg-capi -p opencrg-cli -p opencrg-fmi
 # The instructions of the hot calls (path, u/v, map wheel, loading) against the baseline
 # kept in c-tests/instructions: a change that adds work to one fails here.
@@ -127,12 +134,9 @@ rm -rf target/generated-suite
 for profile in current 2.0.1; do
     CONFORMANCE_PROFILE=$profile c-tests/generated/make_suite.sh target/generated-suite target/release/libopencrg.so
 done
-# The other platforms (Windows, Arm), the Linux archive and the npm package's build side
-# by side, each cargo build in a target folder of its own (in one folder they would take
-# turns on cargo's lock): a release build's link-time optimisation runs on one core, and
-# the emulated tests on one.
-CARGO_TARGET_DIR="$PWD/target/build-wasm" packaging/wasm.sh target/wasm-dist >target/wasm-build.log 2>&1 &
-wasm_build=$!
+# The other platforms (Windows, Arm) and the Linux archive side by side, each cargo build
+# in a target folder of its own (in one folder they would take turns on cargo's lock): a
+# release build's link-time optimisation runs on one core, and the emulated tests on one.
 CARGO_TARGET_DIR="$PWD/target/build-arm" c-tests/cross/run.sh arm >target/cross-arm.log 2>&1 &
 arm=$!
 CARGO_TARGET_DIR="$PWD/target/build-linux" c-tests/cross/run.sh linux >target/cross-linux.log 2>&1 &
@@ -142,6 +146,23 @@ for platform in arm linux; do
     wait "${!platform}" || { cat "target/cross-$platform.log"; exit 1; }
     cat "target/cross-$platform.log"
 done
+# The Python wheel (tested in its step below) built from here on, while the FMU and
+# WebAssembly steps run on one core: manylinux2014 (glibc 2.17), abi3, linked by zig, in
+# a target folder of its own (the WebAssembly step's cargo calls need the workspace's).
+# It carries the Linux archive's FMU binary for write_fmu.
+wheel_build() {
+    rm -f target/wheels/opencrg-*.whl
+    local fmu_binaries=crates/opencrg-python/python/opencrg/fmu
+    rm -rf "$fmu_binaries"
+    mkdir -p "$fmu_binaries/x86_64-linux"
+    cp "target/dist/opencrg-$version-linux-x86_64/lib/opencrg/fmu/x86_64-linux/libopencrg_fmi.so" "$fmu_binaries/x86_64-linux/"
+    # (maturin finds zig through the `python` first on PATH: the build environment's.)
+    env PATH="$PWD/target/python-build/bin:$PATH" CARGO_TARGET_DIR="$PWD/target/build-wheel" \
+        maturin build -q --release --zig -m crates/opencrg-python/Cargo.toml --out target/wheels
+    rm -rf "$fmu_binaries"
+}
+wheel_build >target/wheel-build.log 2>&1 &
+wheel_job=$!
 step "FMU"
 # The FMUs as users drive them: FMPy (from PyPI) validates and simulates FMUs of a CRG
 # file and of shared maps with CRG records in every mode, FMI 2 and 3, co-simulation and
@@ -245,15 +266,9 @@ python3 crates/opencrg-cli/tests/check_view.py target/demo_map_view.png
 python3 crates/opencrg-cli/tests/check_odr_view.py target/demo_map_view.dom examples/data/demo_map.xodr target/release/opencrg
 step "Python wheel"
 # The Python wheel as users get it: manylinux2014 (glibc 2.17), abi3, linked by zig.
-rm -f target/wheels/opencrg-*.whl
-# The wheel carries the FMU binary of the Linux archive (glibc 2.17) for write_fmu.
-fmu_binaries=crates/opencrg-python/python/opencrg/fmu
-rm -rf "$fmu_binaries"
-mkdir -p "$fmu_binaries/x86_64-linux"
-cp "target/dist/opencrg-$version-linux-x86_64/lib/opencrg/fmu/x86_64-linux/libopencrg_fmi.so" "$fmu_binaries/x86_64-linux/"
-# (maturin finds zig through the `python` first on PATH: the build environment's.)
-env PATH="$PWD/target/python-build/bin:$PATH" maturin build -q --release --zig -m crates/opencrg-python/Cargo.toml --out target/wheels
-rm -rf "$fmu_binaries"
+# (Built in the background since the Linux archive was made: see wheel_build.)
+wait "$wheel_job" || { cat target/wheel-build.log; exit 1; }
+cat target/wheel-build.log
 wheel=$(ls target/wheels/opencrg-*-cp39-abi3-*manylinux_2_17_x86_64*.whl)
 # Installed into a fresh environment where cargo cannot be found, and tested there.
 env PATH="$no_cargo" target/python-venv/bin/pip install -q "$wheel"

@@ -28,7 +28,7 @@ strict=(-O2 -Wall -Wextra -Werror -pedantic)
 passed=0
 ok() {
     passed=$((passed + 1))
-    echo "cross $platform: ok: $*"
+    echo "cross $platform: ok ($SECONDS s): $*"
 }
 need() {
     for tool in "$@"; do
