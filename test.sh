@@ -63,13 +63,15 @@ environments_job=$!
 # libOpenDRIVE (../shared/oracles/build-libopendrive.sh, for the geometry of every road of
 # ../shared/opendrive) and the reference C library (../shared/reference/build-references.sh,
 # for the CRG records of every mode), each with the small program the tests ask.
+odr_oracle=$PWD/target/libopendrive/answers
+crg_reference=$PWD/target/crgref/answers
 oracles() {
     ../shared/oracles/build-libopendrive.sh "$PWD/target/libopendrive" >/dev/null
     g++ -O2 -std=c++17 -I target/libopendrive/include crates/opencrg-odr/tests/oracle/libopendrive_answers.cpp \
-        -L target/libopendrive/lib -lOpenDrive -lpugixml -o target/libopendrive/answers
+        -L target/libopendrive/lib -lOpenDrive -lpugixml -o "$odr_oracle"
     ../shared/reference/build-references.sh "$PWD/target/crgref" >/dev/null
     cc -O2 -I target/crgref/up crates/opencrg-odr/tests/oracle/crg_reference_answers.c target/crgref/up/libOpenCRG.so \
-        -lm -Wl,-rpath,"$PWD/target/crgref/up" -o target/crgref/answers
+        -lm -Wl,-rpath,"$PWD/target/crgref/up" -o "$crg_reference"
 }
 oracles >target/oracles.log 2>&1 &
 oracles_job=$!
@@ -82,7 +84,7 @@ step "Rust tests"
 # (cargo-nextest; .config/nextest.toml prints what the oracles' tests measured). Then the
 # doctests (the README's among them).
 wait "$oracles_job" || { cat target/oracles.log; echo "test.sh: building the oracles failed" >&2; exit 1; }
-OPENCRG_ODR_ORACLE="$PWD/target/libopendrive/answers" OPENCRG_CRG_REFERENCE="$PWD/target/crgref/answers" \
+OPENCRG_ODR_ORACLE="$odr_oracle" OPENCRG_CRG_REFERENCE="$crg_reference" \
     cargo nextest run --workspace --run-ignored all --status-level fail --final-status-level slow
 cargo test --workspace --doc
 # The maps' wheel queries, the FMU's answers and the files the toolkit writes once more
@@ -265,8 +267,7 @@ done
 python3 crates/opencrg-cli/tests/check_view.py target/demo_map_view.png
 python3 crates/opencrg-cli/tests/check_odr_view.py target/demo_map_view.dom examples/data/demo_map.xodr target/release/opencrg
 step "Python wheel"
-# The Python wheel as users get it: manylinux2014 (glibc 2.17), abi3, linked by zig.
-# (Built in the background since the Linux archive was made: see wheel_build.)
+# The wheel wheel_build made in the background (see there).
 wait "$wheel_job" || { cat target/wheel-build.log; exit 1; }
 cat target/wheel-build.log
 wheel=$(ls target/wheels/opencrg-*-cp39-abi3-*manylinux_2_17_x86_64*.whl)
