@@ -78,26 +78,6 @@ fn store_inputs(inputs: &[u32], wheels: &mut Wheels, vrs: &[u32], values: &[f64]
     vrs.len()
 }
 
-/// Reads into `out` the wheels' Real variables `vrs` names (by `reals`), up to the first
-/// reference of none; answers how many it read. A loop of its own: its arguments do not
-/// overlap, so the tables' places are read once, not after each value written.
-#[inline(always)]
-fn read_reals(
-    reals: &[Option<(u16, Quantity)>],
-    wheels: &mut Wheels,
-    friction: f64,
-    vrs: &[u32],
-    out: &mut [f64],
-) -> usize {
-    for (k, (&vr, value)) in vrs.iter().zip(out).enumerate() {
-        let Some((wheel, q)) = reals.get(vr as usize).copied().flatten() else {
-            return k;
-        };
-        *value = wheels.real(usize::from(wheel), q, friction);
-    }
-    vrs.len()
-}
-
 /// A parameter's value.
 #[derive(Debug, Clone, PartialEq)]
 struct Parameters {
@@ -257,7 +237,11 @@ impl Instance {
         let mut read = 0;
         if Call::Get.allowed_in(self.state) {
             let friction = self.parameters.friction_default;
-            read = read_reals(&self.reals, &mut self.wheels, friction, vrs, out);
+            let reals = &self.reals;
+            read = self.wheels.read_reals(vrs, out, friction, |vr| {
+                let (wheel, q) = reals.get(vr as usize).copied().flatten()?;
+                Some((usize::from(wheel), q))
+            });
             if read == vrs.len() {
                 return Ok(());
             }

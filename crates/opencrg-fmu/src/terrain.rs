@@ -106,9 +106,6 @@ impl Terrain {
 /// One wheel's answer, as far as it was computed since the wheel last moved.
 #[derive(Debug, Clone, Copy, Default)]
 struct Answer {
-    /// The position (x and y's bits) the base answer is of; none before the first.
-    of: Option<[u64; 2]>,
-    on_road: bool,
     z: f64,
     /// Friction the road gives (NaN: none).
     friction: f64,
@@ -127,7 +124,7 @@ struct Answer {
 }
 
 /// A CRG file's u and v ranges, the grid (on the road within them): first and last u,
-/// first and last v; everywhere on a map (not used there).
+/// first and last v; not used on a map.
 type Ranges = [f64; 4];
 
 impl Answer {
@@ -143,11 +140,11 @@ impl Answer {
     }
 
     /// A CRG file's answer at the (u, v) its search found, with the height the library
-    /// answered there: on the road where the height is finite and (u, v) within `ranges`.
-    fn of_crg(u: f64, v: f64, z: Result<f64>, ranges: &Ranges) -> Answer {
+    /// answered there (answered where that height is finite).
+    fn of_crg(u: f64, v: f64, z: Result<f64>) -> Answer {
         let mut answer = Answer::located(u, v);
         match z {
-            Ok(z) if z.is_finite() => answer.answer_crg(u, v, z, ranges),
+            Ok(z) if z.is_finite() => answer.answer_crg(u, v, z),
             _ => {}
         }
         answer
@@ -158,8 +155,7 @@ impl Answer {
     /// hold alike (no friction, road or lane) are kept: the answer must be one of a CRG
     /// file already (made by one of the functions above).
     #[inline(always)]
-    fn answer_crg(&mut self, u: f64, v: f64, z: f64, &[u0, u1, v0, v1]: &Ranges) {
-        self.on_road = u >= u0 && u <= u1 && v >= v0 && v <= v1;
+    fn answer_crg(&mut self, u: f64, v: f64, z: f64) {
         (self.answered, self.located, self.z, self.a, self.b) = (true, true, z, u, v);
         (self.normal, self.pk) = (None, None);
     }
@@ -175,8 +171,15 @@ enum Evaluator {
     Map(Probe, Probe),
 }
 
-/// One wheel: its evaluator, its answer.
+/// One wheel: its evaluator, its answer and the position it is of.
 struct Wheel {
+    /// The position (x and y's bits) the base answer is of: at first a NaN, whose
+    /// answer is the first one's, nowhere.
+    of: [u64; 2],
+    /// A CRG file's u and v ranges (the grid: on the road within them), kept by each
+    /// wheel: nothing an evaluation is given points into [`Wheels`], whose fields the
+    /// get path then keeps at hand across it.
+    ranges: Ranges,
     evaluator: Evaluator,
     answer: Answer,
     /// Its discrete answers (on the road, road, lane) as of the last event.
@@ -191,8 +194,6 @@ pub struct Wheels {
     wheels: Vec<Wheel>,
     /// The wheels' positions: every x, then every y (see [`Wheels::input_slot`]).
     at: Vec<f64>,
-    /// A CRG file's u and v ranges (the grid: on the road within them).
-    ranges: Ranges,
 }
 
 /// What an output holds off the road (see the guide): no height, the normal up, the
@@ -204,6 +205,13 @@ impl Wheels {
     /// options `changed` (identifier and value; a value that behaves as unset removes
     /// the option). Refused: an option value the C API refuses, named.
     pub fn new(terrain: &Terrain, count: usize, start: (f64, f64), changed: &[(u32, Value)]) -> Result<Wheels> {
+        let ranges = match terrain {
+            Terrain::Crg(road) => {
+                let ((u0, u1), (v0, v1)) = (road.u_range(), road.v_range());
+                [u0, u1, v0, v1]
+            }
+            Terrain::Map(_) => [f64::NAN; 4],
+        };
         let mut wheels = Vec::with_capacity(count);
         for _ in 0..count {
             let evaluator = match terrain {
@@ -223,17 +231,11 @@ impl Wheels {
                 }
                 Terrain::Map(surface) => Evaluator::Map(surface.probe(), surface.probe()),
             };
-            wheels.push(Wheel { evaluator, answer: Answer::nowhere(), latched: (false, -1, 0) });
+            let of = [f64::NAN.to_bits(); 2];
+            wheels.push(Wheel { of, ranges, evaluator, answer: Answer::nowhere(), latched: (false, -1, 0) });
         }
-        let ranges = match terrain {
-            Terrain::Crg(road) => {
-                let ((u0, u1), (v0, v1)) = (road.u_range(), road.v_range());
-                [u0, u1, v0, v1]
-            }
-            Terrain::Map(_) => [f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY],
-        };
         let at = [vec![start.0; count], vec![start.1; count]].concat();
-        Ok(Wheels { wheels, at, ranges })
+        Ok(Wheels { wheels, at })
     }
 
     /// How many wheels.
@@ -258,7 +260,8 @@ impl Wheels {
     /// The input slot of wheel `i`'s (0-based) x or y: every x first, then every y. (A
     /// wheel's x and y are not side by side: each is read as the 8 bytes it was written
     /// as, which the processor forwards from its store to the load at once, where one
-    /// load of both would wait for the two stores to reach the cache.)
+    /// load of both, which the compiler makes of neighbours, would wait for the two
+    /// stores to reach the cache.)
     pub fn input_slot(&self, i: usize, quantity: Quantity) -> Option<usize> {
         let n = self.wheels.len();
         match quantity {
@@ -284,38 +287,58 @@ impl Wheels {
     }
 
     /// Wheel `i`'s (0-based) x and y.
-    #[inline(always)]
     fn position(&self, i: usize) -> [f64; 2] {
         [self.at[i], self.at[self.wheels.len() + i]]
     }
 
-    /// Wheel `i` (0-based) with its base answer at its position known, and that position.
-    #[inline(always)]
-    fn answered(&mut self, i: usize) -> (&mut Wheel, [f64; 2]) {
+    /// Wheel `i` (0-based) with its base answer at its position known.
+    fn answered(&mut self, i: usize) -> &mut Wheel {
         let at = self.position(i);
         let wheel = &mut self.wheels[i];
-        wheel.base(at, &self.ranges);
-        (wheel, at)
+        wheel.base(at);
+        wheel
+    }
+
+    /// Reads into `out` the Real quantities of the wheels that `decode` gives (wheel,
+    /// 0-based, and quantity) for the references `vrs`, up to the first reference it
+    /// gives none of this FMU for; answers how many it read. The hot path of an
+    /// importer's get: the positions and wheels are cut to one length once, so that a
+    /// value costs one bounds check.
+    #[inline(always)]
+    pub fn read_reals(
+        &mut self,
+        vrs: &[u32],
+        out: &mut [f64],
+        friction_default: f64,
+        decode: impl Fn(u32) -> Option<(usize, Quantity)>,
+    ) -> usize {
+        let n = self.wheels.len();
+        let (xs, ys) = self.at.split_at(n);
+        let (ys, wheels) = (&ys[..n], &mut self.wheels[..n]);
+        for (k, (&vr, value)) in vrs.iter().zip(out).enumerate() {
+            let Some((i, quantity)) = decode(vr).filter(|&(i, _)| i < n) else {
+                return k;
+            };
+            let wheel = &mut wheels[i];
+            wheel.base([xs[i], ys[i]]);
+            *value = match quantity {
+                Quantity::Z => wheel.answer.z,
+                _ => wheel.other(quantity, friction_default),
+            };
+        }
+        vrs.len()
     }
 
     /// A Real quantity of wheel `i` (0-based): its input, or its answer, computed if the
     /// wheel moved; `friction_default` where the road gives no friction.
-    #[inline(always)]
     pub fn real(&mut self, i: usize, quantity: Quantity, friction_default: f64) -> f64 {
-        if let Quantity::X | Quantity::Y = quantity {
-            return self.position(i)[quantity as usize];
-        }
-        let (wheel, at) = self.answered(i);
-        if quantity == Quantity::Z {
-            return wheel.answer.z;
-        }
-        wheel.other(at, quantity, friction_default)
+        self.answered(i).other(quantity, friction_default)
     }
 
     /// An Integer quantity of wheel `i` (0-based): a map's road and lane.
     #[inline]
     pub fn integer(&mut self, i: usize, quantity: Quantity) -> i32 {
-        let (wheel, _) = self.answered(i);
+        let wheel = self.answered(i);
         match quantity {
             Quantity::Road => wheel.answer.road,
             Quantity::Lane => wheel.answer.lane,
@@ -326,14 +349,14 @@ impl Wheels {
     /// Whether wheel `i` (0-based) is on the road.
     #[inline]
     pub fn on_road(&mut self, i: usize) -> bool {
-        self.answered(i).0.answer.on_road
+        self.answered(i).on_road()
     }
 
     /// Every wheel's discrete answers (on the road, road, lane) as they are now become
     /// those of the last event (model exchange: at initialization and at each event).
     pub fn latch(&mut self) {
         for i in 0..self.wheels.len() {
-            let (wheel, _) = self.answered(i);
+            let wheel = self.answered(i);
             wheel.latched = wheel.discrete();
         }
     }
@@ -352,52 +375,49 @@ impl Wheel {
     /// search and the plain elevation, as `crgEvalxy2z` does) first, every other case in
     /// [`Wheel::base_found`] and [`Wheel::base_otherwise`].
     #[inline(always)]
-    fn base(&mut self, at: [f64; 2], ranges: &Ranges) {
-        let of = Some(at.map(f64::to_bits));
-        if self.answer.of != of {
-            self.compute(at, ranges);
-            self.answer.of = of;
+    fn base(&mut self, at: [f64; 2]) {
+        if self.of != at.map(f64::to_bits) {
+            self.compute(at[0], at[1]);
         }
     }
 
     /// The base answer at `at` (see [`Wheel::base`]).
     #[inline(never)]
-    fn compute(&mut self, at: [f64; 2], ranges: &Ranges) {
-        let [x, y] = at;
+    fn compute(&mut self, x: f64, y: f64) {
+        self.of = [x.to_bits(), y.to_bits()];
         match &mut self.evaluator {
             Evaluator::Crg(cp) => match cp.xy_to_uv_lean(x, y) {
                 Some((u, v)) => match cp.uv_to_z_plain(u, v) {
-                    Some(z) if z.is_finite() => self.answer.answer_crg(u, v, z, ranges),
-                    _ => self.base_found(u, v, ranges),
+                    Some(z) if z.is_finite() => self.answer.answer_crg(u, v, z),
+                    _ => self.base_found(u, v),
                 },
-                None => self.base_otherwise(x, y, ranges),
+                None => self.base_otherwise(x, y),
             },
-            Evaluator::Map(..) => self.base_otherwise(x, y, ranges),
+            Evaluator::Map(..) => self.base_otherwise(x, y),
         }
     }
 
     /// [`Wheel::base`] of a CRG file whose lean search found (u, v) where the plain
     /// elevation does not apply.
     #[inline(never)]
-    fn base_found(&mut self, u: f64, v: f64, ranges: &Ranges) {
+    fn base_found(&mut self, u: f64, v: f64) {
         if let Evaluator::Crg(cp) = &mut self.evaluator {
-            self.answer = Answer::of_crg(u, v, cp.z_of_found(u, v), ranges);
+            self.answer = Answer::of_crg(u, v, cp.z_of_found(u, v));
         }
     }
 
     /// [`Wheel::base`] where a CRG file's lean search declined, and on a map.
     #[inline(never)]
-    fn base_otherwise(&mut self, x: f64, y: f64, ranges: &Ranges) {
+    fn base_otherwise(&mut self, x: f64, y: f64) {
         self.answer = match &mut self.evaluator {
             // Not a place: no search (its u and v would not be finite).
             Evaluator::Crg(_) if !(x.is_finite() && y.is_finite()) => Answer::nowhere(),
             Evaluator::Crg(cp) => match cp.xy_to_uv_general(x, y) {
-                Ok((u, v)) => Answer::of_crg(u, v, cp.z_of_found(u, v), ranges),
+                Ok((u, v)) => Answer::of_crg(u, v, cp.z_of_found(u, v)),
                 Err(_) => Answer::nowhere(),
             },
             Evaluator::Map(probe, _) => match probe.ground(x, y).filter(|g| g.z.is_finite()) {
                 Some(g) => Answer {
-                    on_road: true,
                     answered: true,
                     z: g.z,
                     friction: g.friction,
@@ -410,19 +430,35 @@ impl Wheel {
         };
     }
 
-    /// The discrete answers (the base answer known).
-    fn discrete(&self) -> Discrete {
-        (self.answer.on_road, self.answer.road, self.answer.lane)
+    /// Whether the wheel is on the road (the base answer known): where the road answered
+    /// the height, on a CRG file within its grid. (Worked out when asked: the hot path
+    /// only stores what it found.)
+    fn on_road(&self) -> bool {
+        let [u0, u1, v0, v1] = self.ranges;
+        let Answer { answered, a: u, b: v, .. } = self.answer;
+        match self.evaluator {
+            Evaluator::Crg(_) => answered && u >= u0 && u <= u1 && v >= v0 && v <= v1,
+            Evaluator::Map(..) => answered,
+        }
     }
 
-    /// A Real quantity other than the height (the base answer known).
+    /// The discrete answers (the base answer known).
+    fn discrete(&self) -> Discrete {
+        (self.on_road(), self.answer.road, self.answer.lane)
+    }
+
+    /// A Real quantity (the base answer known); the height is read inline where it is
+    /// the hot path.
     #[inline(never)]
-    fn other(&mut self, at: [f64; 2], quantity: Quantity, friction_default: f64) -> f64 {
+    fn other(&mut self, quantity: Quantity, friction_default: f64) -> f64 {
         let a = &self.answer;
         match quantity {
+            // The position the answer is of, which is the wheel's.
+            Quantity::X | Quantity::Y => f64::from_bits(self.of[quantity as usize]),
+            Quantity::Z => a.z,
             Quantity::EventIndicator if self.discrete() == self.latched => 1.0,
             Quantity::EventIndicator => -1.0,
-            Quantity::Friction if a.on_road && a.friction.is_finite() => a.friction,
+            Quantity::Friction if self.on_road() && a.friction.is_finite() => a.friction,
             Quantity::Friction => friction_default,
             Quantity::U | Quantity::V | Quantity::S | Quantity::T => {
                 let value = if matches!(quantity, Quantity::U | Quantity::S) { a.a } else { a.b };
@@ -432,7 +468,7 @@ impl Wheel {
                     0.0
                 }
             }
-            Quantity::Nx | Quantity::Ny | Quantity::Nz => self.normal(at)[quantity as usize - Quantity::Nx as usize],
+            Quantity::Nx | Quantity::Ny | Quantity::Nz => self.normal()[quantity as usize - Quantity::Nx as usize],
             Quantity::Heading => self.pk().0,
             Quantity::Curvature => self.pk().1,
             _ => 0.0,
@@ -440,7 +476,8 @@ impl Wheel {
     }
 
     /// The upward unit normal (the base answer known); up where none is known.
-    fn normal(&mut self, [x, y]: [f64; 2]) -> [f64; 3] {
+    fn normal(&mut self) -> [f64; 3] {
+        let [x, y] = self.of.map(f64::from_bits);
         if let Some(n) = self.answer.normal {
             return n;
         }

@@ -121,3 +121,49 @@ fn off_the_road_and_bad_input_give_the_documented_values() {
     assert_eq!(wheels.real(0, Quantity::Z, 1.0), 0.0, "refused beyond the border with border mode none");
     assert_eq!(wheels.real(0, Quantity::Friction, 0.8), 0.8);
 }
+
+/// The get path (`read_reals`, by table) answers what the single reads answer, the
+/// inputs read back as set (a NaN's bits too), and stops at the first reference it is
+/// given no wheel of.
+#[test]
+fn the_get_path_answers_as_the_single_reads() {
+    let terrain = Terrain::load_crg(&demo("demo_road.crg"), Compat::default()).unwrap();
+    let Terrain::Crg(road) = &terrain else { unreachable!() };
+    let (mut fast, mut single) =
+        (Wheels::new(&terrain, 2, (0.0, 0.0), &[]).unwrap(), Wheels::new(&terrain, 2, (0.0, 0.0), &[]).unwrap());
+    let asked = [
+        (1, Quantity::Z),
+        (0, Quantity::X),
+        (0, Quantity::Z),
+        (1, Quantity::Y),
+        (0, Quantity::U),
+        (1, Quantity::Friction),
+    ];
+    let vrs: Vec<u32> = (0..asked.len() as u32).collect();
+    let odd = f64::from_bits(f64::NAN.to_bits() | 0x1234);
+    let mut points = path(road, 50);
+    points.push((odd, 1.0));
+    for (k, &(x, y)) in points.iter().enumerate() {
+        for w in [&mut fast, &mut single] {
+            w.set(0, Quantity::X, x);
+            w.set(0, Quantity::Y, y);
+            w.set(1, Quantity::X, x + 0.5);
+            w.set(1, Quantity::Y, -y);
+        }
+        let mut out = [0.0; 6];
+        // Every other step, the wheels' answers are computed by the single reads first.
+        if k % 2 == 0 {
+            single.real(1, Quantity::Z, 0.6);
+        }
+        assert_eq!(fast.read_reals(&vrs, &mut out, 0.6, |vr| asked.get(vr as usize).copied()), asked.len());
+        let want = asked.map(|(i, q)| single.real(i, q, 0.6));
+        for (q, (g, w)) in asked.iter().zip(out.iter().zip(want)) {
+            assert_eq!(g.to_bits(), w.to_bits(), "({x}, {y}): {q:?}");
+        }
+        assert_eq!(out[1].to_bits(), x.to_bits(), "x reads back as set");
+        assert_eq!(out[3].to_bits(), (-y).to_bits(), "y reads back as set");
+    }
+    let mut out = [0.0; 3];
+    assert_eq!(fast.read_reals(&[0, 99, 1], &mut out, 0.6, |vr| asked.get(vr as usize).copied()), 1);
+    assert_eq!(fast.read_reals(&[0], &mut out, 0.6, |_| Some((2, Quantity::Z))), 0, "no third wheel");
+}
