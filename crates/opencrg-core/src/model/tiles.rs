@@ -315,9 +315,10 @@ impl Tiles {
     }
 
     /// Reads tile `id` from the file into `out`, then checks that the file could be trusted.
-    /// Records are read in blocks of [`BLOCK`]: each record's run of values read (as one
-    /// block of words where the run lies so in every record) and the operations applied to
-    /// it, then each of the tile's long sections written as one piece of the block's values.
+    /// Record by record: its run of values read (as one run of words where the run lies so
+    /// in every record), the operations applied to it where they change it, and each value
+    /// written straight to its long section (the 17 cache lines a run writes stay at hand
+    /// for the next records', which fill the same lines).
     fn decode(&self, id: usize, out: &[AtomicU32]) -> Result<(), Fault> {
         const RUN: usize = TILE_V + 1;
         let r = &*self.records;
@@ -330,59 +331,52 @@ impl Tiles {
         let change = change_numbers(&self.ops);
         let stride = r.record(1) as usize - r.record(0) as usize;
         let mut walker: Option<RowWalker> = None;
-        // The block's values long section by long section, as the tile holds them.
-        let mut block = [[0u32; BLOCK]; RUN];
         let mut run = [0u32; RUN];
         let mut row = [0.0f32; RUN];
-        for first in (0..TILE_STRIDE).step_by(BLOCK) {
-            let count = (TILE_STRIDE - first).min(BLOCK);
-            for k in 0..count {
-                let run = &mut run;
-                let i = (first + k).min(last);
-                // What the records a block on hold is asked for now: the pass waits for
-                // memory, not for arithmetic.
-                let ahead = r.value_address(iu0 + (i + BLOCK).min(last), iv0);
-                crate::base::memory::prefetch(ahead);
-                crate::base::memory::prefetch(ahead.wrapping_add(4 * TILE_V));
-                let nan = match words {
-                    // SAFETY: `words_start` found every record's run of RUN values whole in
-                    // the record, and `iu0 + i` is a record of the file.
-                    Some(start) => unsafe { read_words(start.add((iu0 + i) * stride), run) },
-                    None => {
-                        r.read_run(iu0 + i, iv0, &mut row[..columns]);
-                        for (w, z) in run.iter_mut().zip(&row[..columns]) {
-                            *w = z.to_bits();
-                        }
-                        true
-                    }
-                };
-                // The operations change a value only by scaling or an offset, or where a
-                // NaN is handled.
-                if change || (nan && !self.ops.is_empty()) {
-                    for (z, w) in row.iter_mut().zip(run.iter()) {
-                        *z = f32::from_bits(*w);
-                    }
-                    let values = &mut row[..columns];
-                    if !apply(&self.ops, values) {
-                        let whole = walker.get_or_insert_with(|| RowWalker::new(r, &self.ops)).row(iu0 + i);
-                        values.copy_from_slice(&whole[iv0..iv0 + columns]);
-                    }
-                    for (w, z) in run.iter_mut().zip(values.iter()) {
+        // The tile's long sections (`out` is one slot: one length check here, none in the
+        // pass); beyond the last long section of the road the tile repeats it (never read
+        // as a corner).
+        let longs = &out[..TILE_LEN];
+        for k in 0..TILE_STRIDE {
+            let i = k.min(last);
+            // What the records a few on hold is asked for now: the pass waits for memory,
+            // not for arithmetic.
+            let ahead = r.value_address(iu0 + (i + AHEAD_RECORDS).min(last), iv0);
+            crate::base::memory::prefetch(ahead);
+            crate::base::memory::prefetch(ahead.wrapping_add(4 * TILE_V));
+            let nan = match words {
+                // SAFETY: `words_start` found every record's run of RUN values whole in
+                // the record, and `iu0 + i` is a record of the file.
+                Some(start) => unsafe { read_words(start.add((iu0 + i) * stride), &mut run) },
+                None => {
+                    r.read_run(iu0 + i, iv0, &mut row[..columns]);
+                    for (w, z) in run.iter_mut().zip(&row[..columns]) {
                         *w = z.to_bits();
                     }
+                    true
                 }
-                for (long, &w) in block.iter_mut().zip(run.iter()) {
-                    long[k] = w;
+            };
+            // The operations change a value only by scaling or an offset, or where a NaN
+            // is handled.
+            if change || (nan && !self.ops.is_empty()) {
+                for (z, w) in row.iter_mut().zip(run.iter()) {
+                    *z = f32::from_bits(*w);
+                }
+                let values = &mut row[..columns];
+                if !apply(&self.ops, values) {
+                    let whole = walker.get_or_insert_with(|| RowWalker::new(r, &self.ops)).row(iu0 + i);
+                    values.copy_from_slice(&whole[iv0..iv0 + columns]);
+                }
+                for (w, z) in run.iter_mut().zip(values.iter()) {
+                    *w = z.to_bits();
                 }
             }
-            // Beyond the last long section of the road the tile repeats it (never read as
-            // a corner).
-            for (j, long) in out.chunks_exact(TILE_STRIDE).enumerate() {
-                let values = &block[j.min(columns - 1).min(RUN - 1)][..count];
-                let Some(piece) = long.get(first..first + count) else { continue };
-                for (slot, &w) in piece.iter().zip(values) {
-                    slot.store(w, Ordering::Relaxed);
-                }
+            if columns < RUN {
+                let edge = run[columns - 1];
+                run[columns..].fill(edge);
+            }
+            for (j, &w) in run.iter().enumerate() {
+                longs[j * TILE_STRIDE + k].store(w, Ordering::Relaxed);
             }
         }
         r.check()
@@ -392,5 +386,5 @@ impl Tiles {
 /// How far ahead along u (in values) a lookup asks for the tile: the next cache line.
 const AHEAD: usize = 16;
 
-/// Records a tile is read in at a time.
-const BLOCK: usize = 16;
+/// How many records ahead of the one it decodes a tile's pass asks for.
+const AHEAD_RECORDS: usize = 16;

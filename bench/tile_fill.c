@@ -1,0 +1,56 @@
+/*
+ * What reading a tile of a road read in place costs: one contact point asks u/v to z at
+ * one point of every tile along the road (2.57 m apart, a tile holds 2.56 m at 1 cm), in
+ * strips 0.8 m apart across it, so that every call reads a tile from the file; prints
+ * the time of opening and the time per call, which is one tile's reading. Run it with
+ * OPENCRG_IN_PLACE=always on a binary road whose file the system has cached (read it
+ * once first); a road whose tiles the pool (OPENCRG_IN_PLACE_CACHE) all holds measures
+ * nothing after its first pass.
+ *
+ * cc -O2 -Iinclude bench/tile_fill.c target/release/libopencrg.a -lm -lpthread -ldl -o tile_fill
+ * usage: OPENCRG_IN_PLACE=always ./tile_fill ROAD.crg
+ */
+#include "crgBaseLib.h"
+#include <stdio.h>
+#include <time.h>
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        fprintf(stderr, "usage: tile_fill ROAD.crg\n");
+        return 2;
+    }
+    crgMsgSetLevel(dCrgMsgLevelNone);
+    double start = now();
+    int data = crgLoaderReadFile(argv[1]);
+    if (data <= 0 || !crgCheck(data)) {
+        fprintf(stderr, "tile_fill: cannot read %s\n", argv[1]);
+        return 1;
+    }
+    crgDataSetModifiersApply(data);
+    double opened = now() - start;
+    int cp = crgContactPointCreate(data);
+    double u0, u1, v0, v1, z, sum = 0.0;
+    crgDataSetGetURange(data, &u0, &u1);
+    crgDataSetGetVRange(data, &v0, &v1);
+    long calls = 0;
+    start = now();
+    for (double v = v0 + 0.5; v < v1 - 0.5; v += 0.8)
+        for (double u = u0 + 1.0; u < u1 - 3.0; u += 2.57, calls++)
+            if (crgEvaluv2z(cp, u, v, &z))
+                sum += z;
+    double took = now() - start;
+    if (calls == 0) {
+        fprintf(stderr, "tile_fill: %s is too short or too narrow\n", argv[1]);
+        return 1;
+    }
+    printf("open %.2f s; %ld tiles read, %.1f us each (heights' sum %.6f)\n", opened, calls, took / calls * 1e6, sum);
+    return 0;
+}
