@@ -62,37 +62,37 @@ enum FillError {
     Full,
 }
 
-/// A tile kept in its slot for a contact point: until it is dropped, the slot holds this
-/// tile and nothing writes it.
+/// A tile kept in its slot for a contact point: until the pin is handed back to its pool
+/// ([`Tiles::unpin`]), the slot holds this tile and nothing writes it. It holds no
+/// reference to the pool (entering a tile is one atomic write, not three): whoever holds
+/// it keeps the pool alive and hands it back (a pin never handed back keeps its slot
+/// from being filled again, nothing worse).
+#[derive(Debug)]
 pub(crate) struct Pin {
-    tiles: Arc<Tiles>,
     slot: usize,
     /// The first cross and long section of the tile.
     iu0: usize,
     iv0: usize,
+    /// The tile's values in the pool.
+    values: *const f32,
 }
 
+// SAFETY: the pointer points into the pool's slot, which the pin keeps from being
+// written; it is only read.
+unsafe impl Send for Pin {}
+// SAFETY: as for `Send`.
+unsafe impl Sync for Pin {}
+
 impl Pin {
-    /// The tile's values, long section by long section, [`TILE_STRIDE`] apart.
+    /// The tile's values, long section by long section, [`TILE_STRIDE`] apart (valid as
+    /// long as the pool lives and the pin is not handed back).
     pub(crate) fn values(&self) -> *const f32 {
-        self.tiles.values[self.slot * TILE_LEN..].as_ptr().cast::<f32>()
+        self.values
     }
 
     /// The first cross and long section of the tile.
     pub(crate) fn origin(&self) -> (usize, usize) {
         (self.iu0, self.iv0)
-    }
-}
-
-impl Drop for Pin {
-    fn drop(&mut self) {
-        self.tiles.slots[self.slot].pins.fetch_sub(1, Ordering::Release);
-    }
-}
-
-impl std::fmt::Debug for Pin {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("Pin").field("slot", &self.slot).field("origin", &(self.iu0, self.iv0)).finish()
     }
 }
 
@@ -215,11 +215,13 @@ impl Tiles {
     }
 
     /// Pins the tile holding the cell whose first corner is (`iu`, `iv`), when it is
-    /// present (nothing is read from the file; nothing can panic).
-    pub(crate) fn pin(self: &Arc<Self>, iu: usize, iv: usize) -> Option<Pin> {
+    /// present (nothing is read from the file; nothing can panic). The pin is handed
+    /// back to this pool ([`Tiles::unpin`]).
+    pub(crate) fn pin(&self, iu: usize, iv: usize) -> Option<Pin> {
         let (id, _) = self.place(iu, iv)?;
         let s = self.directory.get(id)?.load(Ordering::Acquire).wrapping_sub(1) as usize;
         let slot = self.slots.get(s)?;
+        let values = self.values.get(s * TILE_LEN..)?.as_ptr().cast::<f32>();
         let mut pins = slot.pins.load(Ordering::Relaxed);
         loop {
             if pins == CLAIMED || pins == CLAIMED - 1 {
@@ -230,10 +232,26 @@ impl Tiles {
                 Err(now) => pins = now,
             }
         }
-        let pin =
-            Pin { tiles: self.clone(), slot: s, iu0: id / self.tiles_v * TILE_U, iv0: id % self.tiles_v * TILE_V };
         // Pinned, the slot keeps what it holds; it may have been filled anew before.
-        (slot.tile.load(Ordering::Acquire) as usize == id).then_some(pin)
+        if slot.tile.load(Ordering::Acquire) as usize != id {
+            slot.pins.fetch_sub(1, Ordering::Release);
+            return None;
+        }
+        Some(Pin { slot: s, iu0: iu / TILE_U * TILE_U, iv0: iv / TILE_V * TILE_V, values })
+    }
+
+    /// How many pins the pool's slots hold now.
+    #[cfg(test)]
+    pub(crate) fn pinned(&self) -> usize {
+        let held = |s: &Slot| s.pins.load(Ordering::Acquire);
+        self.slots.iter().map(held).filter(|&p| p != CLAIMED).map(|p| p as usize).sum()
+    }
+
+    /// Hands back a pin of this pool: its slot may be filled again once nobody else pins it.
+    pub(crate) fn unpin(&self, pin: Pin) {
+        if let Some(slot) = self.slots.get(pin.slot) {
+            slot.pins.fetch_sub(1, Ordering::Release);
+        }
     }
 
     /// The tile of the cell (`iu`, `iv`) and where the cell's first corner lies in it.

@@ -3,8 +3,10 @@
 use crate::base::error::{Error, Result};
 use crate::base::settings::{opt, Settings};
 use crate::model::road::Road;
+use crate::model::tiles::Pin;
+use crate::model::tiles::Tiles;
 use crate::query::eval::{self, EvalOptions};
-use crate::query::plain::{CellTerms, PlainCell, PlainGrid, Window, WINDOWS};
+use crate::query::plain::{CellTerms, PlainCell, PlainGrid, WINDOWS};
 use crate::query::search::{self, History, DEFAULT_HISTORY};
 use std::sync::Arc;
 
@@ -29,15 +31,34 @@ pub struct SearchHistory {
 }
 
 /// The tiles of a road read in place that a contact point keeps pinned, window `k` of its
-/// [`PlainGrid`] the tile `windows[k]`, the one entered last first. A copy pins nothing.
+/// [`PlainGrid`] the tile `pins[k]`, the one entered last first, and the pool they are
+/// pinned in (kept alive by it until they are handed back). A copy pins nothing.
 #[derive(Debug, Default)]
 struct Windows {
-    windows: Vec<Window>,
+    tiles: Option<Arc<Tiles>>,
+    pins: [Option<Pin>; WINDOWS],
 }
 
 impl Clone for Windows {
     fn clone(&self) -> Self {
         Windows::default()
+    }
+}
+
+impl Windows {
+    /// Hands every pin back.
+    fn release(&mut self) {
+        if let Some(tiles) = &self.tiles {
+            for pin in self.pins.iter_mut().filter_map(Option::take) {
+                tiles.unpin(pin);
+            }
+        }
+    }
+}
+
+impl Drop for Windows {
+    fn drop(&mut self) {
+        self.release();
     }
 }
 
@@ -366,12 +387,17 @@ impl ContactPoint {
     /// it entered last), the others moved one on and the one entered longest ago
     /// unpinned; `None` where the tile is not present.
     fn enter_window(&mut self, iu: usize, iv: usize) -> Option<()> {
-        let windows = &mut self.windows.windows;
-        let window = self.plain.window(self.road.grid.tiles()?.pin(iu, iv)?, windows);
-        windows.insert(0, window);
-        windows.truncate(WINDOWS);
-        for (k, window) in windows.iter().enumerate() {
-            self.plain.set_window(k, window);
+        let tiles = self.road.grid.tiles()?;
+        let pin = tiles.pin(iu, iv)?;
+        let w = &mut self.windows;
+        if !w.tiles.as_ref().is_some_and(|t| Arc::ptr_eq(t, tiles)) {
+            // (Not so while the road stays the contact point's: a new road resets both.)
+            w.release();
+            self.plain.clear_windows();
+            w.tiles = Some(tiles.clone());
+        }
+        if let Some(gone) = self.plain.enter_window(pin, &mut w.pins) {
+            tiles.unpin(gone);
         }
         Some(())
     }
@@ -543,5 +569,42 @@ mod tests {
         assert_eq!(plain_answers(&mut c, 20.0), 0, "a smoothing zone takes the general path");
         c.remove_option(opt::SMOOTH_U_BEGIN);
         assert_eq!(plain_answers(&mut c, 20.0), 400 * 20);
+    }
+
+    /// On a road read in place through the smallest pool (16 tiles of the road's 48), each
+    /// contact point pins at most its windows' tiles, hands back the one it leaves, and
+    /// hands back all when it changes road or goes: three wheels weaving along the road
+    /// twice answer as the road in memory does, which needs the pool's slots refilled.
+    #[test]
+    fn contact_points_hand_their_tiles_back() {
+        use crate::model::road::{LoadOptions, ReadInPlace};
+        let spec = RoadSpec::straight(200.0, 4.0, 0.05, 0.1).with_elevation(|u, v| 0.01 * (1.3 * u).sin() + 0.005 * v);
+        let path = std::env::temp_dir().join(format!("opencrg-pins-{}.crg", std::process::id()));
+        crate::write(&spec.build().unwrap(), &path, crate::DataFormat::Krbi).unwrap();
+        let load = |in_place| {
+            let options = LoadOptions { in_place, tile_cache: Some(1), ..LoadOptions::default() };
+            Arc::new(Road::load_with(&path, options).unwrap())
+        };
+        let (placed, memory) = (load(ReadInPlace::Always), load(ReadInPlace::Never));
+        let tiles = placed.grid.tiles().unwrap().clone();
+        let mut wheels: Vec<ContactPoint> = (0..3).map(|_| ContactPoint::new(placed.clone())).collect();
+        let expected = ContactPoint::new(memory.clone());
+        for lap in 0..2 {
+            for step in 0..3990 {
+                for (k, wheel) in wheels.iter_mut().enumerate() {
+                    let u = 0.05 * f64::from(step) + 0.013;
+                    let v = -1.7 + 1.6 * k as f64 + 0.3 * (u / 7.0 + f64::from(lap)).sin();
+                    let z = wheel.uv_to_z_plain(u, v).or_else(|| wheel.z_of_found(u, v).ok());
+                    assert_eq!(z.map(f64::to_bits), expected.uv_to_z(u, v).ok().map(f64::to_bits), "({u}, {v})");
+                }
+                assert!(tiles.pinned() <= 3 * WINDOWS, "{} pins", tiles.pinned());
+            }
+        }
+        assert!(tiles.fills() > 48, "the slots were filled again ({} fills)", tiles.fills());
+        wheels[0].set_road(memory);
+        assert!(tiles.pinned() <= 2 * WINDOWS);
+        drop(wheels);
+        assert_eq!(tiles.pinned(), 0);
+        std::fs::remove_file(&path).ok();
     }
 }

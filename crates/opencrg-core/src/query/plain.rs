@@ -38,7 +38,7 @@ enum LineTerm {
 ///
 /// The common case applies inside its windows, tried in turn: for a grid in memory one, the
 /// road's range and its values; for a grid read in place up to [`WINDOWS`], each the cells
-/// of one pinned tile (see [`PlainGrid::set_window`]), whose values its base and `nu` then
+/// of one pinned tile (see [`PlainGrid::enter_window`]), whose values its base and `nu` then
 /// address as they address a grid in memory. A point outside them takes another path,
 /// which moves a window. The unused windows' bounds are NaN.
 #[derive(Debug, Clone, Copy)]
@@ -276,41 +276,40 @@ impl PlainGrid {
         !self.tiles.is_null()
     }
 
-    /// The window onto the pinned tile `pin` of a grid read in place: the common case
+    /// Makes the pinned tile `pin` of a grid read in place window 0, the windows before
+    /// it moving one on (the last one's tile is the caller's to hand back: `pins` holds
+    /// the pins of the windows as they were, and is moved on alike). The common case then
     /// applies to the points whose cells lie in the tile (and in the road's range), found
     /// exactly as [`PlainGrid::cell`] finds them, and reads their values from the tile.
-    /// The bounds along (across) are those of a window of `near` on the same cross
-    /// (long) sections where there is one: a wheel moving on enters the next tile of the
-    /// same long sections, one weaving the next of the same cross sections.
-    pub(crate) fn window(&self, pin: Pin, near: &[Window]) -> Window {
+    /// The bounds along (across) are those of a window on the same cross (long) sections
+    /// where there is one: a wheel moving on enters the next tile of the same long
+    /// sections, one weaving the next of the same cross sections.
+    pub(crate) fn enter_window(&mut self, pin: Pin, pins: &mut [Option<Pin>; WINDOWS]) -> Option<Pin> {
         let (iu0, iv0) = pin.origin();
         let [u_lo, u_hi, v_lo, v_hi] = self.road;
         let (first_u, first_v) = (iu0 as f64, iv0 as f64);
-        let along = near.iter().find(|w| w.pin.origin().0 == iu0).map(|w| [w.bounds[0], w.bounds[1]]);
-        let [u_from, u_to] = along.unwrap_or_else(|| {
-            [
+        let near = |same: &dyn Fn(&Pin) -> bool| pins.iter().position(|p| p.as_ref().is_some_and(same));
+        let [u_from, u_to] = match near(&|p| p.origin().0 == iu0) {
+            Some(k) => [self.windows[k].range[0], self.windows[k].range[1]],
+            None => [
                 if iu0 == 0 { u_lo } else { at_least(self.u_first, self.u_inc, first_u).max(u_lo) },
                 below(self.u_first, self.u_inc, (first_u + TILE_U as f64).min(self.last.0)).min(u_hi),
-            ]
-        });
-        let across = near.iter().find(|w| w.pin.origin().1 == iv0).map(|w| [w.bounds[2], w.bounds[3]]);
-        let [v_from, v_to] = across.unwrap_or_else(|| {
-            [
+            ],
+        };
+        let [v_from, v_to] = match near(&|p| p.origin().1 == iv0) {
+            Some(k) => [self.windows[k].range[2], self.windows[k].range[3]],
+            None => [
                 if iv0 == 0 { v_lo } else { at_least(self.v_first, self.v_inc, first_v).max(v_lo) },
                 below(self.v_first, self.v_inc, (first_v + TILE_V as f64).min(self.last.1)).min(v_hi),
-            ]
-        });
+            ],
+        };
         let z = pin.values().wrapping_sub(iv0 * TILE_STRIDE + iu0);
-        Window { pin, bounds: [u_from, u_to, v_from, v_to], z }
-    }
-
-    /// Makes `window` this grid's window `k` (below [`WINDOWS`]; the caller keeps it as long
-    /// as it is set).
-    #[inline]
-    pub(crate) fn set_window(&mut self, k: usize, window: &Window) {
-        if let Some(w) = self.windows.get_mut(k) {
-            *w = Bounds { range: window.bounds, z: window.z };
-        }
+        self.windows.copy_within(0..WINDOWS - 1, 1);
+        self.windows[0] = Bounds { range: [u_from, u_to, v_from, v_to], z };
+        let gone = pins[WINDOWS - 1].take();
+        pins.rotate_right(1);
+        pins[0] = Some(pin);
+        gone
     }
 
     /// Removes the windows of a grid read in place (no point takes the common case until
@@ -381,23 +380,6 @@ impl PlainGrid {
         z + bank * cell.v
     }
 }
-
-/// A pinned tile of a grid read in place, and what [`PlainGrid::set_window`] sets for it.
-#[derive(Debug)]
-pub(crate) struct Window {
-    /// Keeps the tile pinned as long as the window lives.
-    pin: Pin,
-    /// The common case's bounds in the window: u from, u to, v from, v to.
-    bounds: [f64; 4],
-    /// The tile's values, rebased as [`PlainGrid`] reads them.
-    z: *const f32,
-}
-
-// SAFETY: the pointer points into the pinned tile, which the window keeps pinned; it is
-// only read.
-unsafe impl Send for Window {}
-// SAFETY: as for `Send`.
-unsafe impl Sync for Window {}
 
 /// Where a point of the common case lies: its cell's interval indices and fractions,
 /// and its v (for the banking).
