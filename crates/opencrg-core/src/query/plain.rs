@@ -210,18 +210,7 @@ impl PlainGrid {
     /// for it.
     #[inline(always)]
     pub(crate) fn cell(&self, u: f64, v: f64) -> Option<PlainCell> {
-        let w = &self.windows;
-        let z = if w[0].holds(u, v) {
-            w[0].z
-        } else if w[1].holds(u, v) {
-            w[1].z
-        } else if w[2].holds(u, v) {
-            w[2].z
-        } else if w[3].holds(u, v) {
-            w[3].z
-        } else {
-            return None;
-        };
+        let z = self.windows.iter().find(|w| w.holds(u, v))?.z;
         self.cell_inside(u, v, z)
     }
 
