@@ -14,16 +14,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
-#include "crgBaseLib.h"
 #include "car.h"
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
+#include "road_open.h"
 
 /* A figure of /proc/self/status in KiB (-1 where the system does not tell it). */
 static long status_kib(const char *key)
@@ -50,12 +42,9 @@ int main(int argc, char **argv)
     double start = argc > 4 ? atof(argv[4]) : 1.0;
     crgMsgSetLevel(dCrgMsgLevelWarn);
     double t0 = now();
-    int id = crgLoaderReadFile(argv[1]);
-    if (id <= 0 || !crgCheck(id)) {
-        fprintf(stderr, "open_drive: %s not opened\n", argv[1]);
+    int id = open_road("open_drive", argv[1]);
+    if (!id)
         return 1;
-    }
-    crgDataSetModifiersApply(id);
     int cps[WHEELS];
     for (int w = 0; w < WHEELS; w++)
         cps[w] = crgContactPointCreate(id);

@@ -10,16 +10,7 @@
  * cc -O2 -Iinclude bench/tile_fill.c target/release/libopencrg.a -lm -lpthread -ldl -o tile_fill
  * usage: OPENCRG_IN_PLACE=always ./tile_fill ROAD.crg
  */
-#include "crgBaseLib.h"
-#include <stdio.h>
-#include <time.h>
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
+#include "road_open.h"
 
 int main(int argc, char **argv)
 {
@@ -29,12 +20,9 @@ int main(int argc, char **argv)
     }
     crgMsgSetLevel(dCrgMsgLevelNone);
     double start = now();
-    int data = crgLoaderReadFile(argv[1]);
-    if (data <= 0 || !crgCheck(data)) {
-        fprintf(stderr, "tile_fill: cannot read %s\n", argv[1]);
+    int data = open_road("tile_fill", argv[1]);
+    if (!data)
         return 1;
-    }
-    crgDataSetModifiersApply(data);
     double opened = now() - start;
     int cp = crgContactPointCreate(data);
     double u0, u1, v0, v1, z, sum = 0.0;

@@ -38,6 +38,14 @@ pub fn error(message: impl ToString) -> Refused {
 /// for the references of one kind: the hot paths' decoding.
 type Slots = Box<[Option<(u16, Quantity)>]>;
 
+/// The wheel (0-based) and quantity the table `slots` gives reference `vr`, if any: the
+/// hot paths' one lookup.
+#[inline(always)]
+fn slot_of(slots: &[Option<(u16, Quantity)>], vr: u32) -> Option<(usize, Quantity)> {
+    let (wheel, q) = slots.get(vr as usize).copied().flatten()?;
+    Some((usize::from(wheel), q))
+}
+
 /// The [`Slots`] of the wheel quantities of an FMU of `kind` with `wheels` wheels that
 /// are `of_kind`.
 fn slots(kind: Kind, wheels: u32, of_kind: impl Fn(Quantity) -> bool) -> Slots {
@@ -221,14 +229,6 @@ impl Instance {
         self.time
     }
 
-    /// The wheel (0-based) and quantity of a Real output or input `vr` names, if it
-    /// names one of this FMU: the hot path, one table entry.
-    #[inline(always)]
-    fn wheel_real(&self, vr: u32) -> Option<(usize, Quantity)> {
-        let (wheel, q) = self.reals.get(vr as usize).copied().flatten()?;
-        Some((usize::from(wheel), q))
-    }
-
     /// Real variables into `out`: a wheel's input or output (computed where the wheel
     /// moved since), the time, a real parameter. The hot path decodes each reference
     /// by a table and reads the wheel's answer; anything else goes the cold way.
@@ -238,10 +238,7 @@ impl Instance {
         if Call::Get.allowed_in(self.state) {
             let friction = self.parameters.friction_default;
             let reals = &self.reals;
-            read = self.wheels.read_reals(vrs, out, friction, |vr| {
-                let (wheel, q) = reals.get(vr as usize).copied().flatten()?;
-                Some((usize::from(wheel), q))
-            });
+            read = self.wheels.read_reals(vrs, out, friction, |vr| slot_of(reals, vr));
             if read == vrs.len() {
                 return Ok(());
             }
@@ -265,7 +262,7 @@ impl Instance {
     #[inline(never)]
     fn real_otherwise(&mut self, vr: u32) -> Result<f64, Refused> {
         self.expect(Call::Get, Some(&self.name_of(vr)))?;
-        if let Some((i, q)) = self.wheel_real(vr) {
+        if let Some((i, q)) = slot_of(&self.reals, vr) {
             return Ok(self.wheels.real(i, q, self.parameters.friction_default));
         }
         match Parameter::from_vr(self.kind, vr) {

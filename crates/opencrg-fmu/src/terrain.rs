@@ -477,10 +477,10 @@ impl Wheel {
 
     /// The upward unit normal (the base answer known); up where none is known.
     fn normal(&mut self) -> [f64; 3] {
-        let [x, y] = self.of.map(f64::from_bits);
         if let Some(n) = self.answer.normal {
             return n;
         }
+        let [x, y] = self.of.map(f64::from_bits);
         let a = self.answer;
         let n = if !a.answered {
             UP

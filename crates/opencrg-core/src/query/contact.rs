@@ -3,8 +3,7 @@
 use crate::base::error::{Error, Result};
 use crate::base::settings::{opt, Settings};
 use crate::model::road::Road;
-use crate::model::tiles::Pin;
-use crate::model::tiles::Tiles;
+use crate::model::tiles::{Pin, Tiles};
 use crate::query::eval::{self, EvalOptions};
 use crate::query::plain::{CellTerms, PlainCell, PlainGrid, WINDOWS};
 use crate::query::search::{self, History, DEFAULT_HISTORY};
@@ -390,8 +389,9 @@ impl ContactPoint {
         let tiles = self.road.grid.tiles()?;
         let pin = tiles.pin(iu, iv)?;
         let w = &mut self.windows;
+        // The pool is kept from the first tile entered on (a new road makes new windows,
+        // so another pool here would be a contact point's mistake: its pins go back first).
         if !w.tiles.as_ref().is_some_and(|t| Arc::ptr_eq(t, tiles)) {
-            // (Not so while the road stays the contact point's: a new road resets both.)
             w.release();
             self.plain.clear_windows();
             w.tiles = Some(tiles.clone());
