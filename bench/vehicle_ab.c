@@ -14,8 +14,11 @@
  *
  * usage: vehicle_ab ROAD LIB.so [LIB.so ...]
  * Environment: AB_CALLS (xy2z,xy2uv,xy2pk,uv2z), AB_SPEEDS (1,5,30,50), AB_ROUNDS
- * (default 61). Output per case and library:
- *   ab CALL SPEED LIB ns MEDIAN min MIN max MAX ratio MEDIAN q1 Q1 q3 Q3
+ * (default 61), AB_MODES (own,shared: a contact point per wheel, one for the four),
+ * AB_IN_PLACE (a value of OPENCRG_IN_PLACE per library, comma-separated, set while that
+ * library opens the road: one build read in place against itself in memory, the same
+ * library named twice). Output per case and library:
+ *   ab CALL SPEED MODE LIB[:in_place=VALUE] ns MEDIAN min MIN max MAX ratio MEDIAN q1 Q1 q3 Q3
  * ns: nanoseconds per call (median, smallest and largest over the rounds); ratio: the
  * first library's time over this one's, per round: its median and quartiles (above 1:
  * this library is faster).
@@ -36,6 +39,8 @@ typedef int (*Eval2)(int, double, double, double *, double *);
 
 struct Lib {
     const char *path;
+    /* The path, with the OPENCRG_IN_PLACE value it opened the road with, if set. */
+    char label[512];
     int data, cp[WHEELS];
     struct Road road;
     Eval1 uv2z, xy2z;
@@ -88,19 +93,38 @@ static void load(struct Lib *l, const char *road)
 
 static volatile double g_sink;
 
-/* Drives steps k0..k1 of `p` with call `c` on `l`'s contact points: ns per call. */
-static double run(const struct Lib *l, enum Call c, const struct Path *p, long k0, long k1)
+/* Sets OPENCRG_IN_PLACE to the `n`-th comma-separated value of AB_IN_PLACE, if any (the
+ * same library named twice opens the road twice, once each way). */
+static void set_in_place(int n)
+{
+    const char *list = getenv("AB_IN_PLACE");
+    for (int k = 0; list && k < n; k++) {
+        list = strchr(list, ',');
+        if (list)
+            list++;
+    }
+    if (!list || !*list)
+        return;
+    char value[64];
+    snprintf(value, sizeof value, "%.*s", (int)strcspn(list, ","), list);
+    setenv("OPENCRG_IN_PLACE", value, 1);
+}
+
+/* Drives steps k0..k1 of `p` with call `c` on `l`'s contact points (all on the first
+ * when `shared`): ns per call. */
+static double run(const struct Lib *l, enum Call c, int shared, const struct Path *p, long k0, long k1)
 {
     double sum = 0, t0 = now();
     for (long k = k0; k < k1; k++)
         for (int w = 0; w < WHEELS; w++) {
             long i = k * WHEELS + w;
+            int cp = l->cp[shared ? 0 : w];
             double a = 0, b = 0;
             switch (c) {
-            case XY2Z: l->xy2z(l->cp[w], p->x[i], p->y[i], &a); break;
-            case XY2UV: l->xy2uv(l->cp[w], p->x[i], p->y[i], &a, &b); break;
-            case XY2PK: l->xy2pk(l->cp[w], p->x[i], p->y[i], &a, &b); break;
-            case UV2Z: l->uv2z(l->cp[w], p->u[i], p->v[i], &a); break;
+            case XY2Z: l->xy2z(cp, p->x[i], p->y[i], &a); break;
+            case XY2UV: l->xy2uv(cp, p->x[i], p->y[i], &a, &b); break;
+            case XY2PK: l->xy2pk(cp, p->x[i], p->y[i], &a, &b); break;
+            case UV2Z: l->uv2z(cp, p->u[i], p->v[i], &a); break;
             }
             sum += a + b;
         }
@@ -123,6 +147,9 @@ int main(int argc, char **argv)
     struct Lib libs[MAX_LIBS];
     for (int l = 0; l < nl; l++) {
         libs[l].path = argv[2 + l];
+        set_in_place(l);
+        const char *mode = getenv("OPENCRG_IN_PLACE");
+        snprintf(libs[l].label, sizeof libs[l].label, "%s%s%s", libs[l].path, mode ? ":in_place=" : "", mode ? mode : "");
         load(&libs[l], argv[1]);
     }
     long steps = (long)rounds * CHUNK;
@@ -136,22 +163,27 @@ int main(int argc, char **argv)
             struct Path p;
             path_alloc(&p, steps);
             drive(&libs[0].road, &p, 0.0, car_speeds[s], steps, libs[0].uv2xy, libs[0].cp[0]);
-            for (int l = 0; l < nl; l++)
-                run(&libs[l], (enum Call)c, &p, 0, CHUNK);
-            for (int r = 0; r < rounds; r++)
-                for (int k = 0; k < nl; k++) {
-                    int l = (r & 1) ? nl - 1 - k : k;
-                    t[l * rounds + r] = run(&libs[l], (enum Call)c, &p, (long)r * CHUNK, (long)(r + 1) * CHUNK);
-                }
-            for (int l = 0; l < nl; l++) {
-                memcpy(sorted, t + l * rounds, sizeof(double) * rounds);
-                qsort(sorted, rounds, sizeof(double), cmp_double);
-                double med = at(sorted, rounds, 0.5), lo = sorted[0], hi = sorted[rounds - 1];
+            for (int shared = 0; shared < 2; shared++) {
+                if (!chosen("AB_MODES", shared ? "shared" : "own"))
+                    continue;
+                for (int l = 0; l < nl; l++)
+                    run(&libs[l], (enum Call)c, shared, &p, 0, CHUNK);
                 for (int r = 0; r < rounds; r++)
-                    sorted[r] = t[r] / t[l * rounds + r];
-                qsort(sorted, rounds, sizeof(double), cmp_double);
-                printf("ab %s %g %s ns %.2f min %.2f max %.2f ratio %.3f q1 %.3f q3 %.3f\n", call_names[c], car_speeds[s],
-                       libs[l].path, med, lo, hi, at(sorted, rounds, 0.5), at(sorted, rounds, 0.25), at(sorted, rounds, 0.75));
+                    for (int k = 0; k < nl; k++) {
+                        int l = (r & 1) ? nl - 1 - k : k;
+                        t[l * rounds + r] = run(&libs[l], (enum Call)c, shared, &p, (long)r * CHUNK, (long)(r + 1) * CHUNK);
+                    }
+                for (int l = 0; l < nl; l++) {
+                    memcpy(sorted, t + l * rounds, sizeof(double) * rounds);
+                    qsort(sorted, rounds, sizeof(double), cmp_double);
+                    double med = at(sorted, rounds, 0.5), lo = sorted[0], hi = sorted[rounds - 1];
+                    for (int r = 0; r < rounds; r++)
+                        sorted[r] = t[r] / t[l * rounds + r];
+                    qsort(sorted, rounds, sizeof(double), cmp_double);
+                    printf("ab %s %g %s %s ns %.2f min %.2f max %.2f ratio %.3f q1 %.3f q3 %.3f\n", call_names[c],
+                           car_speeds[s], shared ? "shared" : "own", libs[l].label, med, lo, hi, at(sorted, rounds, 0.5),
+                           at(sorted, rounds, 0.25), at(sorted, rounds, 0.75));
+                }
             }
             path_free(&p);
         }

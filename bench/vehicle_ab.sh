@@ -7,7 +7,9 @@
 #
 # usage: bench/vehicle_ab.sh BASELINE.so [OTHER.so ...]
 # Environment: ROAD_FILES (default: the straight 80 MB road and the winding road with
-# slope and banking), AB_CALLS, AB_SPEEDS, AB_ROUNDS (see bench/vehicle_ab.c).
+# slope and banking), AB_CALLS, AB_SPEEDS, AB_ROUNDS, AB_MODES, AB_IN_PLACE (see
+# bench/vehicle_ab.c). This build in memory against itself read in place, in one process:
+#   AB_IN_PLACE=never,always bench/vehicle_ab.sh target/release/libopencrg.so
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ $# -ge 1 ] || { echo "usage: bench/vehicle_ab.sh BASELINE.so [OTHER.so ...]" >&2; exit 2; }
