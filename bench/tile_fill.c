@@ -1,7 +1,8 @@
 /*
  * What reading a tile of a road read in place costs: one contact point asks u/v to z at
- * one point of every tile along the road (2.57 m apart, a tile holds 2.56 m at 1 cm), in
- * strips 0.8 m apart across it, so that every call reads a tile from the file; prints
+ * one point of every tile along the road (a tile holds TILE_U cross sections: the points
+ * lie one cross section more apart), in strips 0.8 m apart across it, so that every call
+ * reads a tile from the file; prints
  * the time of opening and the time per call, which is one tile's reading. Run it with
  * OPENCRG_IN_PLACE=always on a binary road whose file the system has cached (read it
  * once first); a road whose tiles the pool (OPENCRG_IN_PLACE_CACHE) all holds measures
@@ -11,6 +12,12 @@
  * usage: OPENCRG_IN_PLACE=always ./tile_fill ROAD.crg
  */
 #include "road_open.h"
+
+/* Cross sections a tile holds (opencrg_core::tiles::TILE_U; -DTILE_U=N for a build of
+ * another tile size). */
+#ifndef TILE_U
+#define TILE_U 512
+#endif
 
 int main(int argc, char **argv)
 {
@@ -25,13 +32,15 @@ int main(int argc, char **argv)
         return 1;
     double opened = now() - start;
     int cp = crgContactPointCreate(data);
-    double u0, u1, v0, v1, z, sum = 0.0;
+    double u0, u1, v0, v1, du, dv, z, sum = 0.0;
     crgDataSetGetURange(data, &u0, &u1);
     crgDataSetGetVRange(data, &v0, &v1);
+    crgDataSetGetIncrements(data, &du, &dv);
+    double step = (TILE_U + 1) * du;
     long calls = 0;
     start = now();
     for (double v = v0 + 0.5; v < v1 - 0.5; v += 0.8)
-        for (double u = u0 + 1.0; u < u1 - 3.0; u += 2.57, calls++)
+        for (double u = u0 + 1.0; u < u1 - step; u += step, calls++)
             if (crgEvaluv2z(cp, u, v, &z))
                 sum += z;
     double took = now() - start;

@@ -1,5 +1,5 @@
 //! The decoded values of a grid read in place, in tiles laid out for the wheel: a tile
-//! holds 256 cross sections of 16 long sections (and the next cross and long section,
+//! holds 512 cross sections of 16 long sections (and the next cross and long section,
 //! so that every cell whose first corner lies in it lies wholly in it), long section by
 //! long section, in single precision after the modifiers' operations; a lookup reads
 //! four values of one tile, as a grid in memory reads four of its own.
@@ -7,7 +7,7 @@
 //! The file holds cross section after cross section: a wheel moving along the road meets
 //! a new record (a new page of the file) every centimetre. Read in place, each cell a
 //! wheel enters would cost two cache misses in the file (measured: three to six times
-//! the lookup in memory at 30 to 50 m/s); a tile costs one pass over 257 records once,
+//! the lookup in memory at 30 to 50 m/s); a tile costs one pass over 513 records once,
 //! reading only the 17 values of each that it keeps, and then serves every wheel that
 //! drives over it as memory does.
 //!
@@ -26,8 +26,10 @@ use crate::model::in_place::{apply, change_numbers, read_words, Records, RowWalk
 use std::sync::atomic::{fence, AtomicU32, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex, PoisonError};
 
-/// Cross sections a tile holds cells of.
-pub const TILE_U: usize = 256;
+/// Cross sections a tile holds cells of: a wheel enters the next tile along every 5.12 m
+/// at 1 cm (the longer the tile, the rarer the switch, for the same reading per metre:
+/// measured in docs/performance.md).
+pub const TILE_U: usize = 512;
 /// Long sections a tile holds cells of.
 pub const TILE_V: usize = 16;
 /// Values between a tile's long sections.

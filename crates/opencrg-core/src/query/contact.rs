@@ -574,11 +574,15 @@ mod tests {
     /// On a road read in place through the smallest pool (16 tiles of the road's 48), each
     /// contact point pins at most its windows' tiles, hands back the one it leaves, and
     /// hands back all when it changes road or goes: three wheels weaving along the road
-    /// twice answer as the road in memory does, which needs the pool's slots refilled.
+    /// and back answer as the road in memory does, which needs the pool's slots refilled.
     #[test]
     fn contact_points_hand_their_tiles_back() {
         use crate::model::road::{LoadOptions, ReadInPlace};
-        let spec = RoadSpec::straight(200.0, 4.0, 0.05, 0.1).with_elevation(|u, v| 0.01 * (1.3 * u).sin() + 0.005 * v);
+        use crate::model::tiles::TILE_U;
+        // 16 tiles along, 3 across.
+        let steps = 16 * TILE_U as u32;
+        let spec = RoadSpec::straight(0.05 * f64::from(steps), 4.0, 0.05, 0.1)
+            .with_elevation(|u, v| 0.01 * (1.3 * u).sin() + 0.005 * v);
         let path = std::env::temp_dir().join(format!("opencrg-pins-{}.crg", std::process::id()));
         crate::write(&spec.build().unwrap(), &path, crate::DataFormat::Krbi).unwrap();
         let load = |in_place| {
@@ -590,10 +594,12 @@ mod tests {
         let mut wheels: Vec<ContactPoint> = (0..3).map(|_| ContactPoint::new(placed.clone())).collect();
         let expected = ContactPoint::new(memory.clone());
         for lap in 0..2 {
-            for step in 0..3990 {
+            for step in 0..steps - 10 {
                 for (k, wheel) in wheels.iter_mut().enumerate() {
-                    let u = 0.05 * f64::from(step) + 0.013;
-                    let v = -1.7 + 1.6 * k as f64 + 0.3 * (u / 7.0 + f64::from(lap)).sin();
+                    // Forward, then back: windows entered from either side.
+                    let u = 0.05 * f64::from(if lap == 0 { step } else { steps - 11 - step }) + 0.013;
+                    let v =
+                        -1.7 + 1.6 * k as f64 + 0.3 * (u * 4000.0 / (7.0 * f64::from(steps)) + f64::from(lap)).sin();
                     let z = wheel.uv_to_z_plain(u, v).or_else(|| wheel.z_of_found(u, v).ok());
                     assert_eq!(z.map(f64::to_bits), expected.uv_to_z(u, v).ok().map(f64::to_bits), "({u}, {v})");
                 }
