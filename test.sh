@@ -18,7 +18,8 @@
 # and its web page in headless Chromium; the .glb export against the Khronos
 # glTF validator, the 3D view in headless Chromium; last the Python package: its
 # manylinux2014 wheel built with maturin and zig, installed into a fresh virtual
-# environment without cargo, and its pytest suite (pickling, multiprocessing, Dask); the
+# environment without cargo, and its pytest suite (pickling, multiprocessing, Dask), the
+# conformance suite's client on it (the suite, the differential tester's roads); the
 # same suite on the package installed from its source distribution.
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -274,6 +275,23 @@ wheel=$(ls target/wheels/opencrg-*-cp39-abi3-*manylinux_2_17_x86_64*.whl)
 # Installed into a fresh environment where cargo cannot be found, and tested there.
 env PATH="$no_cargo" target/python-venv/bin/pip install -q "$wheel"
 env PATH="$no_cargo" OPENCRG_CLI="$PWD/target/release/opencrg" target/python-venv/bin/python -m pytest -q -p no:logging crates/opencrg-python/tests
+# The conformance suite's client on the package (crates/opencrg-python/tests/conformance.py,
+# the C client's calls in its order): the suite in both profiles, and the differential
+# tester's roads to the last bit (the package computes with glibc, as the Linux library
+# does: no case may differ).
+for profile in current 2.0.1; do
+    golden=golden; [ $profile = current ] || golden=golden-$profile
+    env PATH="$no_cargo" target/python-venv/bin/python crates/opencrg-python/tests/conformance.py \
+        ../shared/conformance target/python-conformance-$profile $profile
+    result=$(python3 ../shared/conformance/compare.py ../shared/conformance/$golden target/python-conformance-$profile | tail -1)
+    echo "Python package, conformance ($profile profile): $result"
+    [ "$result" = "232 passed, 0 failed" ]
+    env PATH="$no_cargo" target/python-venv/bin/python crates/opencrg-python/tests/conformance.py \
+        target/generated-suite target/python-generated-$profile $profile
+    echo "Python package, generated roads ($profile profile), to the bit:" \
+        "$(python3 c-tests/generated/same_bits.py target/generated-suite/$golden target/python-generated-$profile 0 | tail -1)"
+    python3 c-tests/generated/same_bits.py target/generated-suite/$golden target/python-generated-$profile 0 >/dev/null
+done
 step "Python sdist"
 # The source distribution as PyPI would serve it: installed into a fresh environment that
 # has cargo (a development build, to keep the run short), and the suite's core, toolkit

@@ -1,10 +1,11 @@
 //! `opencrg.ContactPoint`: a road with its own options and x/y search history.
 
-use crate::evaluation::{evaluate, for_each_evaluation, set_option, set_options, Call};
+use crate::evaluation::{evaluate_noting, for_each_evaluation, set_option, set_options, Call, Refused};
 use crate::names;
 use crate::road::Road;
 use ::opencrg_core as crg;
 use ::opencrg_core::settings::Family;
+use numpy::PyArrayMethods;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
@@ -25,6 +26,8 @@ pub(crate) struct ContactPoint {
     /// The road version the core contact point evaluates.
     seen: u64,
     inner: crg::ContactPoint,
+    /// Which points the last evaluation refused.
+    refused: Refused,
 }
 
 impl ContactPoint {
@@ -45,7 +48,9 @@ impl ContactPoint {
         b: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyAny>> {
         self.follow_road(py);
-        evaluate(py, &mut self.inner, call, a, b)
+        let (values, refused) = evaluate_noting(py, &mut self.inner, call, a, b)?;
+        self.refused = refused;
+        Ok(values)
     }
 }
 
@@ -67,13 +72,25 @@ impl ContactPoint {
             inner.set_history(size).map_err(crate::errors::to_py)?;
         }
         set_options(&mut inner, options)?;
-        Ok(ContactPoint { road: road.unbind(), seen, inner })
+        Ok(ContactPoint { road: road.unbind(), seen, inner, refused: Refused::One(false) })
     }
 
     /// The road evaluated.
     #[getter]
     fn road(&self, py: Python<'_>) -> Py<Road> {
         self.road.clone_ref(py)
+    }
+
+    /// Which points the last evaluation refused: for a point given as numbers whether the C
+    /// API's call refuses it (its return code 0; the values are then NaN, and a NaN answered
+    /// is not a refusal); for arrays a boolean array of their shape, true where a point was
+    /// answered NaN. False before any evaluation.
+    #[getter]
+    fn refused<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        Ok(match &self.refused {
+            Refused::One(refused) => pyo3::types::PyBool::new(py, *refused).to_owned().into_any(),
+            Refused::Many(flags, shape) => numpy::PyArray1::from_slice(py, flags).reshape(shape.clone())?.into_any(),
+        })
     }
 
     /// The options in force, by name.

@@ -44,6 +44,39 @@ pub(crate) fn evaluate<'py>(
     points.results(py, outputs)
 }
 
+/// Which points of an evaluation were refused.
+pub(crate) enum Refused {
+    /// One point given as numbers: whether the C API's call refuses it.
+    One(bool),
+    /// Points given as arrays: the points answered NaN (a refusal, or a NaN answer), and
+    /// the inputs' shape.
+    Many(Vec<bool>, Vec<usize>),
+}
+
+/// [`evaluate`], noting which points were refused: a point given as numbers is asked as
+/// the C API's call asks it (a refusal known as such), arrays through the batch calls.
+pub(crate) fn evaluate_noting<'py>(
+    py: Python<'py>,
+    cp: &mut crg::ContactPoint,
+    call: Call,
+    a: &Bound<'py, PyAny>,
+    b: &Bound<'py, PyAny>,
+) -> PyResult<(Bound<'py, PyAny>, Refused)> {
+    let points = Points::new([a, b])?;
+    let [sa, sb] = points.slices()?;
+    if points.is_scalar() {
+        let answer = py.detach(|| cp.evaluate_one(call, sa[0], sb[0]));
+        let refused = answer.is_err();
+        let values = answer.unwrap_or_else(|_| vec![f64::NAN; call.outputs()]);
+        let outputs = values.into_iter().map(|v| vec![v]).collect();
+        return Ok((points.results(py, outputs)?, Refused::One(refused)));
+    }
+    let outputs = py.detach(|| cp.evaluate_many(call, sa, sb));
+    let refused = (0..sa.len()).map(|i| outputs.iter().any(|c| c[i].is_nan())).collect();
+    let shape = points.shape().to_vec();
+    Ok((points.results(py, outputs)?, Refused::Many(refused, shape)))
+}
+
 /// Sets an option by its Python name on a core contact point.
 pub(crate) fn set_option(cp: &mut crg::ContactPoint, name: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
     let s = names::lookup(Family::Option, name)?;

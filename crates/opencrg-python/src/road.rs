@@ -282,6 +282,14 @@ impl Road {
         self.inner.closed_track()
     }
 
+    /// (closed, u begin, u end) as the C API's `crgDataSetGetUtilityDataClosedTrack` reports
+    /// them: whether the line is closed, and the u range found the last time it could be
+    /// closed ((0.0, 0.0) if never), also when modifiers have since opened it.
+    #[getter]
+    fn closed_track_report(&self) -> (bool, f64, f64) {
+        self.inner.closed_track_report()
+    }
+
     /// The behaviour profile: `"upstream"` or `"2.0.1"`.
     #[getter]
     fn compat(&self) -> String {

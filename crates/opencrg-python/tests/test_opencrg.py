@@ -102,6 +102,26 @@ def test_refused_points_are_nan(road_file):
     assert np.isfinite(kept[:4]).all() and np.isnan(kept[4])
 
 
+def test_a_contact_point_tells_which_points_it_refused(road_file):
+    road = opencrg.Road(road_file)
+    (u0, u1), (v0, v1) = road.u_range, road.v_range
+    cp = opencrg.ContactPoint(road, border_mode_u=opencrg.BORDER_NONE, border_mode_v=opencrg.BORDER_NONE)
+    assert cp.refused is False
+    assert np.isnan(cp.uv_to_z(u0 - 1.0, 0.0)) and cp.refused is True
+    assert np.isfinite(cp.uv_to_z(10.0, 0.0)) and cp.refused is False
+    x, y = cp.uv_to_xy(10.0, v1 + 0.5)
+    assert np.isfinite(x) and cp.refused is False
+    assert np.isnan(cp.xy_to_z(x, y)) and cp.refused is True
+    z = cp.uv_to_z(np.array([[u0 - 1.0, 10.0], [10.0, u1 + 1.0]]), np.zeros((2, 2)))
+    assert cp.refused.dtype == bool and cp.refused.tolist() == np.isnan(z).tolist() == [[True, False], [False, True]]
+    # A NaN cell's elevation is answered NaN, not refused (the C API's return code 1),
+    # except with border mode none, where NaN at the border lies off the road.
+    plain = opencrg.ContactPoint(road)
+    assert np.isnan(plain.uv_to_z(1.0, 1.8)) and plain.refused is False
+    assert np.isnan(cp.uv_to_z(1.0, 1.8)) and cp.refused is True
+    assert road.closed_track is None and road.closed_track_report == (False, 0.0, 0.0)
+
+
 def test_options_as_keywords_or_a_contact_point(road_file):
     road = opencrg.Road(road_file)
     u, v = random_uv(road, 400, 4)
