@@ -1,6 +1,6 @@
 //! `opencrg.ContactPoint`: a road with its own options and x/y search history.
 
-use crate::evaluation::{evaluate_noting, for_each_evaluation, set_option, set_options, Call, Refused};
+use crate::evaluation::{evaluate, for_each_evaluation, set_option, set_options, Call, Refused};
 use crate::names;
 use crate::road::Road;
 use ::opencrg_core as crg;
@@ -48,7 +48,7 @@ impl ContactPoint {
         b: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyAny>> {
         self.follow_road(py);
-        let (values, refused) = evaluate_noting(py, &mut self.inner, call, a, b)?;
+        let (values, refused) = evaluate(py, &mut self.inner, call, a, b)?;
         self.refused = refused;
         Ok(values)
     }

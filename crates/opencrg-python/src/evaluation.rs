@@ -30,20 +30,6 @@ pub(crate) use for_each_evaluation;
 /// The evaluations (the core's list).
 pub(crate) use ::opencrg_core::Evaluation as Call;
 
-/// Evaluates `call` at the points (a, b) on `cp`, without the GIL.
-pub(crate) fn evaluate<'py>(
-    py: Python<'py>,
-    cp: &mut crg::ContactPoint,
-    call: Call,
-    a: &Bound<'py, PyAny>,
-    b: &Bound<'py, PyAny>,
-) -> PyResult<Bound<'py, PyAny>> {
-    let points = Points::new([a, b])?;
-    let [sa, sb] = points.slices()?;
-    let outputs = py.detach(|| cp.evaluate_many(call, sa, sb));
-    points.results(py, outputs)
-}
-
 /// Which points of an evaluation were refused.
 pub(crate) enum Refused {
     /// One point given as numbers: whether the C API's call refuses it.
@@ -53,9 +39,10 @@ pub(crate) enum Refused {
     Many(Vec<bool>, Vec<usize>),
 }
 
-/// [`evaluate`], noting which points were refused: a point given as numbers is asked as
-/// the C API's call asks it (a refusal known as such), arrays through the batch calls.
-pub(crate) fn evaluate_noting<'py>(
+/// Evaluates `call` at the points (a, b) on `cp`, without the GIL, noting which points were
+/// refused: a point given as numbers is asked as the C API's call asks it (a refusal known
+/// as such), arrays through the batch calls.
+pub(crate) fn evaluate<'py>(
     py: Python<'py>,
     cp: &mut crg::ContactPoint,
     call: Call,

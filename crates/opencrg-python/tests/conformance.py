@@ -63,28 +63,26 @@ def answers(path, nu, nv, settings, compat):
         f"closed 1 {int(closed)}{number(cmin)}{number(cmax)}",
     ]
     length, width = umax - umin, vmax - vmin
-    answered = lambda: 0 if cp.refused else 1  # noqa: E731
+
+    def ask(call, a, b):
+        """The call's values as a tuple, and 1 where answered, 0 where refused."""
+        values = call(a, b)
+        return (values if isinstance(values, tuple) else (values,)), 0 if cp.refused else 1
+
     nan = math.nan
-    for a in range(nu + 1):
-        for b in range(nv + 1):
+    for i in range(nu + 1):
+        for j in range(nv + 1):
             # The grid reaches 30 % of the length and 40 % of the width past every border.
-            u = umin - 0.3 * length + 1.6 * length * a / nu
-            v = vmin - 0.4 * width + 1.8 * width * b / nv
-            x, y = cp.uv_to_xy(u, v)
-            r1 = answered()
-            z = cp.uv_to_z(u, v)
-            r2 = answered()
-            phi, curv = cp.uv_to_pk(u, v)
-            r3 = answered()
-            u2 = v2 = z2 = phi2 = curv2 = nan
-            r4 = r5 = r6 = 0
+            u = umin - 0.3 * length + 1.6 * length * i / nu
+            v = vmin - 0.4 * width + 1.8 * width * j / nv
+            (x, y), r1 = ask(cp.uv_to_xy, u, v)
+            (z,), r2 = ask(cp.uv_to_z, u, v)
+            (phi, curv), r3 = ask(cp.uv_to_pk, u, v)
+            (u2, v2), r4, (z2,), r5, (phi2, curv2), r6 = (nan, nan), 0, (nan,), 0, (nan, nan), 0
             if r1:
-                u2, v2 = cp.xy_to_uv(x, y)
-                r4 = answered()
-                z2 = cp.xy_to_z(x, y)
-                r5 = answered()
-                phi2, curv2 = cp.xy_to_pk(x, y)
-                r6 = answered()
+                (u2, v2), r4 = ask(cp.xy_to_uv, x, y)
+                (z2,), r5 = ask(cp.xy_to_z, x, y)
+                (phi2, curv2), r6 = ask(cp.xy_to_pk, x, y)
             lines.append(
                 f"q{number(u)}{number(v)} | {r1}{number(x)}{number(y)} | {r2}{number(z)}"
                 f" | {r3}{number(phi)}{number(curv)} | {r4}{number(u2)}{number(v2)} | {r5}{number(z2)}"
