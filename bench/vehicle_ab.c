@@ -135,6 +135,33 @@ static double run(const struct Lib *l, enum Call c, int shared, const struct Pat
 
 static double at(double *sorted, int n, double q) { return sorted[(int)(q * (n - 1) + 0.5)]; }
 
+/* One case: every library drives the path's first chunk, then the rounds in turns (the
+ * order flipping each round); prints each library's times and ratios. */
+static void one_case(const struct Lib *libs, int nl, enum Call c, double speed, int shared, const struct Path *p, int rounds)
+{
+    double *t = malloc(sizeof(double) * rounds * nl), *sorted = malloc(sizeof(double) * rounds);
+    for (int l = 0; l < nl; l++)
+        run(&libs[l], c, shared, p, 0, CHUNK);
+    for (int r = 0; r < rounds; r++)
+        for (int k = 0; k < nl; k++) {
+            int l = (r & 1) ? nl - 1 - k : k;
+            t[l * rounds + r] = run(&libs[l], c, shared, p, (long)r * CHUNK, (long)(r + 1) * CHUNK);
+        }
+    for (int l = 0; l < nl; l++) {
+        memcpy(sorted, t + l * rounds, sizeof(double) * rounds);
+        qsort(sorted, rounds, sizeof(double), cmp_double);
+        double med = at(sorted, rounds, 0.5), lo = sorted[0], hi = sorted[rounds - 1];
+        for (int r = 0; r < rounds; r++)
+            sorted[r] = t[r] / t[l * rounds + r];
+        qsort(sorted, rounds, sizeof(double), cmp_double);
+        printf("ab %s %g %s %s ns %.2f min %.2f max %.2f ratio %.3f q1 %.3f q3 %.3f\n", call_names[c], speed,
+               shared ? "shared" : "own", libs[l].label, med, lo, hi, at(sorted, rounds, 0.5), at(sorted, rounds, 0.25),
+               at(sorted, rounds, 0.75));
+    }
+    free(t);
+    free(sorted);
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 3 || argc - 2 > MAX_LIBS) {
@@ -153,7 +180,6 @@ int main(int argc, char **argv)
         load(&libs[l], argv[1]);
     }
     long steps = (long)rounds * CHUNK;
-    double *t = malloc(sizeof(double) * rounds * nl), *sorted = malloc(sizeof(double) * rounds);
     for (int c = XY2Z; c <= UV2Z; c++) {
         if (!chosen("AB_CALLS", call_names[c]))
             continue;
@@ -163,32 +189,11 @@ int main(int argc, char **argv)
             struct Path p;
             path_alloc(&p, steps);
             drive(&libs[0].road, &p, 0.0, car_speeds[s], steps, libs[0].uv2xy, libs[0].cp[0]);
-            for (int shared = 0; shared < 2; shared++) {
-                if (!chosen("AB_MODES", shared ? "shared" : "own"))
-                    continue;
-                for (int l = 0; l < nl; l++)
-                    run(&libs[l], (enum Call)c, shared, &p, 0, CHUNK);
-                for (int r = 0; r < rounds; r++)
-                    for (int k = 0; k < nl; k++) {
-                        int l = (r & 1) ? nl - 1 - k : k;
-                        t[l * rounds + r] = run(&libs[l], (enum Call)c, shared, &p, (long)r * CHUNK, (long)(r + 1) * CHUNK);
-                    }
-                for (int l = 0; l < nl; l++) {
-                    memcpy(sorted, t + l * rounds, sizeof(double) * rounds);
-                    qsort(sorted, rounds, sizeof(double), cmp_double);
-                    double med = at(sorted, rounds, 0.5), lo = sorted[0], hi = sorted[rounds - 1];
-                    for (int r = 0; r < rounds; r++)
-                        sorted[r] = t[r] / t[l * rounds + r];
-                    qsort(sorted, rounds, sizeof(double), cmp_double);
-                    printf("ab %s %g %s %s ns %.2f min %.2f max %.2f ratio %.3f q1 %.3f q3 %.3f\n", call_names[c],
-                           car_speeds[s], shared ? "shared" : "own", libs[l].label, med, lo, hi, at(sorted, rounds, 0.5),
-                           at(sorted, rounds, 0.25), at(sorted, rounds, 0.75));
-                }
-            }
+            for (int shared = 0; shared < 2; shared++)
+                if (chosen("AB_MODES", shared ? "shared" : "own"))
+                    one_case(libs, nl, (enum Call)c, car_speeds[s], shared, &p, rounds);
             path_free(&p);
         }
     }
-    free(t);
-    free(sorted);
     return 0;
 }

@@ -48,9 +48,7 @@ impl ContactPoint {
         b: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyAny>> {
         self.follow_road(py);
-        let (values, refused) = evaluate(py, &mut self.inner, call, a, b)?;
-        self.refused = refused;
-        Ok(values)
+        evaluate(py, &mut self.inner, call, a, b, Some(&mut self.refused))
     }
 }
 

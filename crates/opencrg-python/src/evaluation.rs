@@ -39,29 +39,31 @@ pub(crate) enum Refused {
     Many(Vec<bool>, Vec<usize>),
 }
 
-/// Evaluates `call` at the points (a, b) on `cp`, without the GIL, noting which points were
-/// refused: a point given as numbers is asked as the C API's call asks it (a refusal known
-/// as such), arrays through the batch calls.
+/// Evaluates `call` at the points (a, b) on `cp`, without the GIL: a point given as
+/// numbers as the C API's call asks it, arrays through the batch calls. Which points were
+/// refused goes to `refused` where one is given (found only then).
 pub(crate) fn evaluate<'py>(
     py: Python<'py>,
     cp: &mut crg::ContactPoint,
     call: Call,
     a: &Bound<'py, PyAny>,
     b: &Bound<'py, PyAny>,
-) -> PyResult<(Bound<'py, PyAny>, Refused)> {
+    refused: Option<&mut Refused>,
+) -> PyResult<Bound<'py, PyAny>> {
     let points = Points::new([a, b])?;
     let [sa, sb] = points.slices()?;
     if points.is_scalar() {
-        let answer = py.detach(|| cp.evaluate_one(call, sa[0], sb[0]));
-        let refused = answer.is_err();
-        let values = answer.unwrap_or_else(|_| vec![f64::NAN; call.outputs()]);
-        let outputs = values.into_iter().map(|v| vec![v]).collect();
-        return Ok((points.results(py, outputs)?, Refused::One(refused)));
+        let (values, was_refused) = py.detach(|| cp.evaluate_one_or_nan(call, sa[0], sb[0]));
+        if let Some(r) = refused {
+            *r = Refused::One(was_refused);
+        }
+        return points.results(py, values.into_iter().map(|v| vec![v]).collect());
     }
     let outputs = py.detach(|| cp.evaluate_many(call, sa, sb));
-    let refused = (0..sa.len()).map(|i| outputs.iter().any(|c| c[i].is_nan())).collect();
-    let shape = points.shape().to_vec();
-    Ok((points.results(py, outputs)?, Refused::Many(refused, shape)))
+    if let Some(r) = refused {
+        *r = Refused::Many(Call::answered_nan(&outputs), points.shape().to_vec());
+    }
+    points.results(py, outputs)
 }
 
 /// Sets an option by its Python name on a core contact point.

@@ -127,7 +127,7 @@ impl Road {
     ) -> PyResult<Bound<'py, PyAny>> {
         let mut cp = crg::ContactPoint::new(self.shared());
         set_options(&mut cp, options)?;
-        Ok(evaluate(py, &mut cp, call, a, b)?.0)
+        evaluate(py, &mut cp, call, a, b, None)
     }
 }
 

@@ -22,12 +22,12 @@ pub(crate) fn call(
     let p = Points::new(a, b, names)?;
     refused.clear();
     let columns = if p.scalar {
-        let answer = cp.evaluate_one(call, p.a[0], p.b[0]);
-        refused.push(u8::from(answer.is_err()));
-        answer.unwrap_or_else(|_| vec![f64::NAN; call.outputs()]).into_iter().map(|v| vec![v]).collect()
+        let (values, was_refused) = cp.evaluate_one_or_nan(call, p.a[0], p.b[0]);
+        refused.push(u8::from(was_refused));
+        values.into_iter().map(|v| vec![v]).collect()
     } else {
         let columns = cp.evaluate_many(call, &p.a, &p.b);
-        refused.extend((0..p.a.len()).map(|i| u8::from(columns.iter().any(|c| c[i].is_nan()))));
+        refused.extend(Evaluation::answered_nan(&columns).into_iter().map(u8::from));
         columns
     };
     Ok(if call.outputs() == 1 { p.one(columns.into_iter().next().unwrap_or_default()) } else { p.many(columns) })

@@ -220,6 +220,13 @@ impl Evaluation {
     pub fn takes_xy(self) -> bool {
         matches!(self, Evaluation::XyToZ | Evaluation::XyToUv | Evaluation::XyToPk | Evaluation::XyToNormal)
     }
+
+    /// Which points of [`ContactPoint::evaluate_many`]'s `columns` were answered NaN in some
+    /// value (refused, or a NaN answered): what the bindings report as refused for arrays.
+    pub fn answered_nan(columns: &[Vec<f64>]) -> Vec<bool> {
+        let n = columns.first().map_or(0, Vec::len);
+        (0..n).map(|i| columns.iter().any(|c| c[i].is_nan())).collect()
+    }
 }
 
 impl ContactPoint {
@@ -257,6 +264,15 @@ impl ContactPoint {
             _ => unreachable!("one output vector per value of the call"),
         }
         out
+    }
+
+    /// `call` at one point as the C API's call answers it: its values (NaN where it is
+    /// refused) and whether it was refused.
+    pub fn evaluate_one_or_nan(&mut self, call: Evaluation, a: f64, b: f64) -> (Vec<f64>, bool) {
+        match self.evaluate_one(call, a, b) {
+            Ok(values) => (values, false),
+            Err(_) => (vec![f64::NAN; call.outputs()], true),
+        }
     }
 
     /// `call` at one point: its values, or why it was refused.

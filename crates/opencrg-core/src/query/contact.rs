@@ -581,8 +581,8 @@ mod tests {
         use crate::model::tiles::TILE_U;
         // 16 tiles along, 3 across.
         let steps = 16 * TILE_U as u32;
-        let spec = RoadSpec::straight(0.05 * f64::from(steps), 4.0, 0.05, 0.1)
-            .with_elevation(|u, v| 0.01 * (1.3 * u).sin() + 0.005 * v);
+        let length = 0.05 * f64::from(steps);
+        let spec = RoadSpec::straight(length, 4.0, 0.05, 0.1).with_elevation(|u, v| 0.01 * (1.3 * u).sin() + 0.005 * v);
         let path = std::env::temp_dir().join(format!("opencrg-pins-{}.crg", std::process::id()));
         crate::write(&spec.build().unwrap(), &path, crate::DataFormat::Krbi).unwrap();
         let load = |in_place| {
@@ -598,8 +598,8 @@ mod tests {
                 for (k, wheel) in wheels.iter_mut().enumerate() {
                     // Forward, then back: windows entered from either side.
                     let u = 0.05 * f64::from(if lap == 0 { step } else { steps - 11 - step }) + 0.013;
-                    let v =
-                        -1.7 + 1.6 * k as f64 + 0.3 * (u * 4000.0 / (7.0 * f64::from(steps)) + f64::from(lap)).sin();
+                    // About four and a half weaves over the road, whatever its length.
+                    let v = -1.7 + 1.6 * k as f64 + 0.3 * (28.6 * u / length + f64::from(lap)).sin();
                     let z = wheel.uv_to_z_plain(u, v).or_else(|| wheel.z_of_found(u, v).ok());
                     assert_eq!(z.map(f64::to_bits), expected.uv_to_z(u, v).ok().map(f64::to_bits), "({u}, {v})");
                 }
