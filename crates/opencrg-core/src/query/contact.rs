@@ -376,9 +376,11 @@ impl ContactPoint {
     /// it can panic or take a lock.
     #[inline(never)]
     pub fn uv_to_z_placed(&mut self, u: f64, v: f64) -> Option<f64> {
-        let (iu, iv) = self.plain.road_cell(u, v)?.indices();
+        let cell = self.plain.road_cell(u, v)?;
+        let (iu, iv) = cell.indices();
         self.enter_window(iu, iv)?;
-        self.uv_to_z_plain(u, v)
+        let cell = self.plain.in_first_window(cell, u, v)?;
+        Some(self.plain_on(&cell))
     }
 
     /// Makes the tile of the cell (`iu`, `iv`) a window: a present tile pinned now, the

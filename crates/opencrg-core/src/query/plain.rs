@@ -101,11 +101,13 @@ struct Bounds {
 impl Bounds {
     const NONE: Bounds = Bounds { range: [f64::NAN; 4], z: std::ptr::null() };
 
-    /// Whether (u, v) lies in the window (false for NaN).
+    /// Whether (u, v) lies in the window (false for NaN). Across first: the windows a
+    /// contact point shared by four wheels tries before the right one are mostly those
+    /// of the other wheel track, on other long sections.
     #[inline(always)]
     fn holds(&self, u: f64, v: f64) -> bool {
         let [u_lo, u_hi, v_lo, v_hi] = self.range;
-        u >= u_lo && u <= u_hi && v >= v_lo && v <= v_hi
+        v >= v_lo && v <= v_hi && u >= u_lo && u <= u_hi
     }
 }
 
@@ -223,6 +225,14 @@ impl PlainGrid {
             return None;
         }
         self.cell_inside(u, v, std::ptr::null())
+    }
+
+    /// `cell` (of [`PlainGrid::road_cell`] at (u, v)) read from window 0, when the point
+    /// lies in it (as after the window of its tile was entered); `None` otherwise.
+    #[inline]
+    pub(crate) fn in_first_window(&self, cell: PlainCell, u: f64, v: f64) -> Option<PlainCell> {
+        let w = &self.windows[0];
+        w.holds(u, v).then_some(PlainCell { z: w.z, ..cell })
     }
 
     /// The cell of a point inside the road's range of the common case, whose window's
