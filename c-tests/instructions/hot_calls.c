@@ -9,7 +9,9 @@
  *   CASE    xy2z-own, xy2z-shared, xy2uv-own, xy2uv-shared, xy2pk-own, uv2z-own,
  *           uv2pk-own: the car of bench/car.h driving along the CRG file FILE at 30 m/s,
  *           four wheels at 1 kHz, a contact point per wheel ("own") or one for the four
- *           ("shared");
+ *           ("shared"); with "-in-place" in the name (xy2z-own-in-place, ...) the road is
+ *           read in place (OPENCRG_IN_PLACE=always) and the measured steps are driven once
+ *           unmeasured before, so that the count is of the tiles' warm path;
  *           odr-wheels: the same car's wheels along the first road of the OpenDRIVE map FILE
  *           through crgOdrEvalxy, a probe per wheel;
  *           load: crgLoaderReadFile of the CRG file FILE
@@ -142,6 +144,9 @@ int main(int argc, char **argv)
     const char *name = argv[2], *file = argv[3];
     long steps = argc > 4 ? atol(argv[4]) : 4000;
     int shared = strstr(name, "-shared") != NULL;
+    int in_place = strstr(name, "-in-place") != NULL;
+    if (in_place)
+        setenv("OPENCRG_IN_PLACE", "always", 1);
     enum Call c = LOAD;
     for (int i = 0; i <= LOAD; i++) {
         size_t n = strlen(names[i]);
@@ -199,6 +204,9 @@ int main(int argc, char **argv)
         f.e2 = (Eval2)symbol(c == XY2UV ? "crgEvalxy2uv" : c == XY2PK ? "crgEvalxy2pk" : "crgEvaluv2pk");
     /* The same calls unmeasured first: the contact points' histories and the caches filled. */
     run_calls(c, &f, cps, &p, 0, steps, file);
+    /* Read in place: the tiles of the measured steps read, as on a lap driven before. */
+    if (in_place)
+        run_calls(c, &f, cps, &p, steps, 2 * steps, file);
     measured(c, &f, cps, &p, steps, 2 * steps, file);
     printf("calls %ld\n", steps * WHEELS);
     path_free(&p);

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The instruction guard: callgrind counts the instructions each hot call of the C library
 # executes (c-tests/instructions/hot_calls.c: the car of bench/car.h on the benchmark roads,
+# read into memory and, on the warm path of their tiles, read in place,
 # a map's wheel query, loading a KRBI road) and compares them with the baseline kept beside
 # this script. Instruction counts are the same for the same program and input however
 # busy the machine is, so a few per cent more means more work in the call, not noise.
@@ -56,6 +57,9 @@ cases=(
     "uv2z-own-straight uv2z-own $straight"
     "uv2z-own-winding uv2z-own $winding"
     "uv2pk-own-winding uv2pk-own $winding"
+    "xy2z-own-in-place-winding xy2z-own-in-place $winding"
+    "uv2z-own-in-place-straight uv2z-own-in-place $straight"
+    "uv2z-shared-in-place-straight uv2z-shared-in-place $straight"
     "odr-wheels-attached odr-wheels examples/data/modes/attached.xodr"
     "load-krbi-80mb load $straight"
 )
@@ -105,9 +109,9 @@ fi
 echo "instruction guard: $toolchain; tolerance $tolerance %"
 if [ -n "$against" ]; then
     echo "against $against"
-    printf '%-24s %14s %14s %8s\n' case other this change
+    printf '%-30s %14s %14s %8s\n' case other this change
 else
-    printf '%-24s %14s %14s %8s\n' case baseline now change
+    printf '%-30s %14s %14s %8s\n' case baseline now change
 fi
 failed=()
 for c in "${cases[@]}"; do
@@ -120,12 +124,12 @@ for c in "${cases[@]}"; do
         was=$(awk -v n="$name" '$1 == n { print $2 }' "$baseline")
     fi
     if [ -z "$was" ]; then
-        printf '%-24s %14s %14s\n' "$name" "(none)" "$now"
+        printf '%-30s %14s %14s\n' "$name" "(none)" "$now"
         failed+=("$name (not in the baseline)")
         continue
     fi
     change=$(awk -v a="$now" -v b="$was" 'BEGIN { printf "%+.2f", 100 * (a - b) / b }')
-    printf '%-24s %14s %14s %7s%%\n' "$name" "$was" "$now" "$change"
+    printf '%-30s %14s %14s %7s%%\n' "$name" "$was" "$now" "$change"
     if awk -v c="$change" -v t="$tolerance" 'BEGIN { exit !(c > t) }'; then
         failed+=("$name ($change %)")
     fi
