@@ -255,10 +255,12 @@ fn written_back_a_road_in_place_is_the_road_in_memory() {
 #[test]
 fn threads_share_one_road_in_place() {
     let dir = folder("threads");
-    let (name, spec) = specs().remove(1);
-    let (placed, memory) = both(&spec, &dir, name, DataFormat::Krbi, Compat::Upstream);
-    // A pool of the fewest slots: the threads evict each other's tiles all the time.
-    let path = dir.join(format!("{name}_KRBI.crg"));
+    // 19 tiles along, 3 across.
+    let spec = RoadSpec::straight(480.0, 4.0, 0.05, 0.1).with_elevation(surface);
+    let (placed, memory) = both(&spec, &dir, "long", DataFormat::Krbi, Compat::Upstream);
+    // A pool of the fewest slots (16 of the road's 57 tiles): the threads evict each
+    // other's tiles and read tiles at the same time all the time.
+    let path = dir.join("long_KRBI.crg");
     let small = Road::load_with(
         &path,
         LoadOptions { in_place: ReadInPlace::Always, tile_cache: Some(1), ..LoadOptions::default() },
@@ -272,7 +274,7 @@ fn threads_share_one_road_in_place() {
                 s.spawn(move || {
                     let (mut a, mut b) = (ContactPoint::new(road), ContactPoint::new(memory));
                     for k in 0..20_000 {
-                        let u = (f64::from(k) * 0.0031 * f64::from(t + 1)) % 60.0;
+                        let u = (f64::from(k) * 0.023 * f64::from(t + 1)) % 479.0;
                         let v = -1.9 + 3.8 * ((f64::from(k) * 0.37 + f64::from(t)).sin() * 0.5 + 0.5);
                         let (za, zb) = (a.z_of_found(u, v), b.z_of_found(u, v));
                         assert_eq!(bits(za.map(|z| [z])), bits(zb.map(|z| [z])), "thread {t} at ({u}, {v})");
@@ -281,6 +283,7 @@ fn threads_share_one_road_in_place() {
                 });
             }
         });
+        assert!(road.grid().tiles_read() >= 57, "{} tiles read", road.grid().tiles_read());
     }
 }
 

@@ -18,8 +18,10 @@
 //! its values has read one tile whole (a sequence lock). A contact point may also pin a
 //! tile (a pin): a pinned slot is never filled again until unpinned, so the contact
 //! point reads it as plain memory, as it reads a grid in memory. Filling a tile takes the
-//! pool's lock: it claims the slot filled longest ago that nobody pins, reads the records,
-//! checks the file, and publishes the tile.
+//! pool's lock only to claim the slot filled longest ago that nobody pins and to mark the
+//! tile as being read; the records are read and the file checked outside it (threads read
+//! different tiles at once), then the tile is published. A lookup whose tile another
+//! thread is reading reads its cell from the file meanwhile.
 
 use crate::base::mapped_file::Fault;
 use crate::model::in_place::{apply, change_numbers, read_words, Records, RowWalker, ValueOp};
@@ -41,6 +43,9 @@ pub const TILE_BYTES: usize = TILE_LEN * 4;
 /// What a slot holds for no tile (the directory holds 0 for a tile not present, else its
 /// slot plus one).
 const ABSENT: u32 = u32::MAX;
+/// What the directory holds for a tile being read (no slot: lookups and pins find it
+/// absent).
+const READING: u32 = u32::MAX;
 /// The fewest slots a pool has, whatever its size: a few wheels' tiles at once.
 const MIN_SLOTS: usize = 16;
 
@@ -62,6 +67,8 @@ enum FillError {
     File(Fault),
     /// Every slot is pinned.
     Full,
+    /// Another thread is reading the tile.
+    Busy,
 }
 
 /// A tile kept in its slot for a contact point: until the pin is handed back to its pool
@@ -197,13 +204,14 @@ impl Tiles {
             }
             match self.fill(id) {
                 Ok(()) => {}
-                Err(FillError::Full) => return self.read_corners(iu, iv),
+                Err(FillError::Full | FillError::Busy) => return self.read_corners(iu, iv),
                 Err(FillError::File(_)) => return None,
             }
         }
     }
 
-    /// The cell's values read from the file directly (every slot being pinned).
+    /// The cell's values read from the file directly (every slot being pinned, or the tile
+    /// being read by another thread).
     #[cold]
     fn read_corners(&self, iu: usize, iv: usize) -> Option<[f32; 4]> {
         let mut walker = RowWalker::new(&self.records, &self.ops);
@@ -285,53 +293,68 @@ impl Tiles {
         (slot.seq.load(Ordering::Relaxed) == seq).then_some(values)
     }
 
-    /// Fills tile `id` into a slot (unless another thread did meanwhile): the next slot
-    /// nobody pins, in the order they were filled.
+    /// Fills tile `id` into a slot (unless another thread did meanwhile, or is doing it):
+    /// the next slot nobody pins, in the order they were filled. The pool's lock is held
+    /// while the slot is claimed and the tile marked as being read, not while it is read.
     #[cold]
     fn fill(&self, id: usize) -> Result<(), FillError> {
-        let mut state = self.fill.lock().unwrap_or_else(PoisonError::into_inner);
-        if let Some(fault) = state.fault {
-            return Err(FillError::File(fault));
-        }
-        let present = self.directory[id].load(Ordering::Acquire).wrapping_sub(1) as usize;
-        if self.slots.get(present).is_some_and(|s| s.tile.load(Ordering::Relaxed) as usize == id) {
-            return Ok(());
-        }
-        let claim =
-            |s: usize| self.slots[s].pins.compare_exchange(0, CLAIMED, Ordering::Acquire, Ordering::Relaxed).is_ok();
-        let s = if state.used < self.slots.len() && claim(state.used) {
-            state.used += 1;
-            state.used - 1
-        } else {
-            let n = self.slots.len();
-            let found = (0..n).map(|k| (state.next + k) % n).find(|&s| claim(s)).ok_or(FillError::Full)?;
-            state.next = (found + 1) % n;
-            found
+        let (s, seq) = {
+            let mut state = self.fill.lock().unwrap_or_else(PoisonError::into_inner);
+            if let Some(fault) = state.fault {
+                return Err(FillError::File(fault));
+            }
+            let entry = self.directory[id].load(Ordering::Acquire);
+            if entry == READING {
+                return Err(FillError::Busy);
+            }
+            let present = entry.wrapping_sub(1) as usize;
+            if self.slots.get(present).is_some_and(|s| s.tile.load(Ordering::Relaxed) as usize == id) {
+                return Ok(());
+            }
+            let claim = |s: usize| {
+                self.slots[s].pins.compare_exchange(0, CLAIMED, Ordering::Acquire, Ordering::Relaxed).is_ok()
+            };
+            let s = if state.used < self.slots.len() && claim(state.used) {
+                state.used += 1;
+                state.used - 1
+            } else {
+                let n = self.slots.len();
+                let found = (0..n).map(|k| (state.next + k) % n).find(|&s| claim(s)).ok_or(FillError::Full)?;
+                state.next = (found + 1) % n;
+                found
+            };
+            let slot = &self.slots[s];
+            let old = slot.tile.load(Ordering::Relaxed);
+            if let Some(entry) = self.directory.get(old as usize) {
+                entry.store(0, Ordering::Relaxed);
+            }
+            let seq = slot.seq.load(Ordering::Relaxed);
+            slot.seq.store(seq.wrapping_add(1), Ordering::Relaxed);
+            fence(Ordering::Release);
+            self.directory[id].store(READING, Ordering::Relaxed);
+            (s, seq)
         };
         let slot = &self.slots[s];
-        let old = slot.tile.load(Ordering::Relaxed);
-        if let Some(entry) = self.directory.get(old as usize) {
-            entry.store(0, Ordering::Relaxed);
-        }
-        let seq = slot.seq.load(Ordering::Relaxed);
-        slot.seq.store(seq.wrapping_add(1), Ordering::Relaxed);
-        fence(Ordering::Release);
         let decoded = self.decode(id, &self.values[s * TILE_LEN..(s + 1) * TILE_LEN]);
         let tile = if decoded.is_ok() { id as u32 } else { ABSENT };
         slot.tile.store(tile, Ordering::Relaxed);
         slot.seq.store(seq.wrapping_add(2), Ordering::Release);
-        slot.pins.store(0, Ordering::Release);
-        match decoded {
+        // The directory before the slot is given free: whoever claims the slot next finds
+        // the tile where it clears it.
+        let result = match decoded {
             Ok(()) => {
                 self.directory[id].store(s as u32 + 1, Ordering::Release);
                 self.fills.fetch_add(1, Ordering::Relaxed);
                 Ok(())
             }
             Err(fault) => {
-                state.fault = Some(fault);
-                Err(FillError::File(fault))
+                self.directory[id].store(0, Ordering::Release);
+                let mut state = self.fill.lock().unwrap_or_else(PoisonError::into_inner);
+                Err(FillError::File(*state.fault.get_or_insert(fault)))
             }
-        }
+        };
+        slot.pins.store(0, Ordering::Release);
+        result
     }
 
     /// Reads tile `id` from the file into `out`, then checks that the file could be trusted.
