@@ -294,45 +294,11 @@ impl Tiles {
     }
 
     /// Fills tile `id` into a slot (unless another thread did meanwhile, or is doing it):
-    /// the next slot nobody pins, in the order they were filled. The pool's lock is held
-    /// while the slot is claimed and the tile marked as being read, not while it is read.
+    /// the slot [`Tiles::claim_slot`] gives, read outside the pool's lock, then published.
     #[cold]
     fn fill(&self, id: usize) -> Result<(), FillError> {
-        let (s, seq) = {
-            let mut state = self.fill.lock().unwrap_or_else(PoisonError::into_inner);
-            if let Some(fault) = state.fault {
-                return Err(FillError::File(fault));
-            }
-            let entry = self.directory[id].load(Ordering::Acquire);
-            if entry == READING {
-                return Err(FillError::Busy);
-            }
-            let present = entry.wrapping_sub(1) as usize;
-            if self.slots.get(present).is_some_and(|s| s.tile.load(Ordering::Relaxed) as usize == id) {
-                return Ok(());
-            }
-            let claim = |s: usize| {
-                self.slots[s].pins.compare_exchange(0, CLAIMED, Ordering::Acquire, Ordering::Relaxed).is_ok()
-            };
-            let s = if state.used < self.slots.len() && claim(state.used) {
-                state.used += 1;
-                state.used - 1
-            } else {
-                let n = self.slots.len();
-                let found = (0..n).map(|k| (state.next + k) % n).find(|&s| claim(s)).ok_or(FillError::Full)?;
-                state.next = (found + 1) % n;
-                found
-            };
-            let slot = &self.slots[s];
-            let old = slot.tile.load(Ordering::Relaxed);
-            if let Some(entry) = self.directory.get(old as usize) {
-                entry.store(0, Ordering::Relaxed);
-            }
-            let seq = slot.seq.load(Ordering::Relaxed);
-            slot.seq.store(seq.wrapping_add(1), Ordering::Relaxed);
-            fence(Ordering::Release);
-            self.directory[id].store(READING, Ordering::Relaxed);
-            (s, seq)
+        let Some((s, seq)) = self.claim_slot(id)? else {
+            return Ok(());
         };
         let slot = &self.slots[s];
         let decoded = self.decode(id, &self.values[s * TILE_LEN..(s + 1) * TILE_LEN]);
@@ -355,6 +321,45 @@ impl Tiles {
         };
         slot.pins.store(0, Ordering::Release);
         result
+    }
+
+    /// Under the pool's lock, the slot tile `id` is to be read into and its sequence number
+    /// (now odd), the tile marked as being read: the next slot nobody pins, in the order
+    /// they were filled. `None` where the tile is present.
+    fn claim_slot(&self, id: usize) -> Result<Option<(usize, u32)>, FillError> {
+        let mut state = self.fill.lock().unwrap_or_else(PoisonError::into_inner);
+        if let Some(fault) = state.fault {
+            return Err(FillError::File(fault));
+        }
+        let entry = self.directory[id].load(Ordering::Acquire);
+        if entry == READING {
+            return Err(FillError::Busy);
+        }
+        let present = entry.wrapping_sub(1) as usize;
+        if self.slots.get(present).is_some_and(|s| s.tile.load(Ordering::Relaxed) as usize == id) {
+            return Ok(None);
+        }
+        let claim =
+            |s: usize| self.slots[s].pins.compare_exchange(0, CLAIMED, Ordering::Acquire, Ordering::Relaxed).is_ok();
+        let s = if state.used < self.slots.len() && claim(state.used) {
+            state.used += 1;
+            state.used - 1
+        } else {
+            let n = self.slots.len();
+            let found = (0..n).map(|k| (state.next + k) % n).find(|&s| claim(s)).ok_or(FillError::Full)?;
+            state.next = (found + 1) % n;
+            found
+        };
+        let slot = &self.slots[s];
+        let old = slot.tile.load(Ordering::Relaxed);
+        if let Some(entry) = self.directory.get(old as usize) {
+            entry.store(0, Ordering::Relaxed);
+        }
+        let seq = slot.seq.load(Ordering::Relaxed);
+        slot.seq.store(seq.wrapping_add(1), Ordering::Relaxed);
+        fence(Ordering::Release);
+        self.directory[id].store(READING, Ordering::Relaxed);
+        Ok(Some((s, seq)))
     }
 
     /// Reads tile `id` from the file into `out`, then checks that the file could be trusted.
