@@ -98,6 +98,8 @@ mod table {
 
     static TABLE: [Slot; SLOTS] = [FREE; SLOTS];
 
+    /// Takes a free slot for the mapping at `start` of `len` bytes; `None` where all are
+    /// taken.
     pub(super) fn register(start: usize, len: usize) -> Option<usize> {
         let i = TABLE
             .iter()
@@ -109,12 +111,14 @@ mod table {
         Some(i)
     }
 
+    /// Frees slot `i` (its mapping is about to be unmapped).
     pub(super) fn unregister(i: usize) {
         let slot = &TABLE[i];
         slot.start.store(0, Ordering::Release);
         slot.taken.store(false, Ordering::Release);
     }
 
+    /// Whether a read of slot `i`'s mapping faulted since it was registered.
     #[inline]
     pub(super) fn faulted(i: usize) -> bool {
         // The reads of the mapping come before this load: a fault they met was answered
