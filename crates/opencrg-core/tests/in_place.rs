@@ -344,6 +344,60 @@ fn a_file_cut_short_under_an_open_road_is_refused_not_fatal() {
     assert!(!out.exists());
 }
 
+/// Threads reading different tiles of a road whose file was cut short, all at once (each
+/// reads its tile outside the pool's lock, so reads fault in several threads together):
+/// every call answers as the road read into memory or is refused naming the file; none
+/// hangs or ends the process.
+#[cfg(target_os = "linux")]
+#[test]
+fn threads_reading_a_file_cut_short_at_once_are_refused_not_fatal() {
+    const THREADS: usize = 8;
+    let dir = folder("cut-threads");
+    let path = dir.join("cut.crg");
+    let spec = RoadSpec::straight(60.0, 4.0, 0.01, 0.1).with_elevation(surface);
+    opencrg_core::write(&spec.build().unwrap(), &path, DataFormat::Krbi).unwrap();
+    let load = |in_place| Arc::new(Road::load_with(&path, LoadOptions { in_place, ..LoadOptions::default() }).unwrap());
+    let (road, memory) = (load(ReadInPlace::Always), load(ReadInPlace::Never));
+    // A tile read before the cut.
+    ContactPoint::new(road.clone()).uv_to_z(1.0, 0.2).unwrap();
+    let len = std::fs::metadata(&path).unwrap().len();
+    std::fs::OpenOptions::new().write(true).open(&path).unwrap().set_len(len / 3).unwrap();
+    let name = path.display().to_string();
+    let start = std::sync::Barrier::new(THREADS);
+    let counts: Vec<(usize, usize)> = std::thread::scope(|s| {
+        let threads: Vec<_> = (0..THREADS)
+            .map(|t| {
+                let (road, memory, name, start) = (road.clone(), memory.clone(), &name, &start);
+                s.spawn(move || {
+                    let (cp, reference) = (ContactPoint::new(road), ContactPoint::new(memory));
+                    // Each thread its own long sections, and along the road from its own place.
+                    let v = -1.9 + 0.5 * t as f64;
+                    start.wait();
+                    let (mut answered, mut refused) = (0, 0);
+                    for k in 0..400 {
+                        let u = 0.5 + ((t * 53 + k * 7) % 590) as f64 * 0.1;
+                        match cp.uv_to_z(u, v) {
+                            Ok(z) => {
+                                assert_eq!(Some(z.to_bits()), reference.uv_to_z(u, v).ok().map(f64::to_bits));
+                                answered += 1;
+                            }
+                            Err(e) => {
+                                let e = e.to_string();
+                                assert!(e.contains(name.as_str()) && e.contains("cut short"), "{e}");
+                                refused += 1;
+                            }
+                        }
+                    }
+                    (answered, refused)
+                })
+            })
+            .collect();
+        threads.into_iter().map(|t| t.join().unwrap()).collect()
+    });
+    assert!(counts.iter().all(|&(_, refused)| refused > 0), "{counts:?}");
+    assert!(road.grid().fault().is_some());
+}
+
 #[test]
 fn a_file_changed_or_removed_under_an_open_road() {
     let dir = folder("changed");
