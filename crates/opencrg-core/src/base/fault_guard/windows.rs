@@ -129,10 +129,14 @@ unsafe extern "system" fn on_fault(pointers: *mut ExceptionPointers) -> i32 {
         };
         view.store(if again as usize == start { REPLACED } else { LOST }, Ordering::Release);
     }
-    while view.load(Ordering::Acquire) == REPLACING {
-        std::hint::spin_loop();
-    }
-    if view.load(Ordering::Acquire) != REPLACED {
+    // The thread replacing the view is done within a few system calls.
+    let state = loop {
+        match view.load(Ordering::Acquire) {
+            REPLACING => std::hint::spin_loop(),
+            state => break state,
+        }
+    };
+    if state != REPLACED {
         return EXCEPTION_CONTINUE_SEARCH;
     }
     // SAFETY: the page lies in the range reserved in place of the view.
