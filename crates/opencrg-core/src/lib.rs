@@ -48,6 +48,7 @@ mod model {
     pub mod report;
     pub(crate) mod road;
     pub(crate) mod sample_index;
+    pub(crate) mod tile_bounds;
     pub mod tiles;
 }
 mod read {

@@ -8,6 +8,7 @@ use crate::model::header::{DataFormat, Header};
 use crate::model::refline::{LineFinding, RefLine};
 use crate::model::report::{Event, Statistics};
 use crate::model::sample_index::SampleIndex;
+use crate::model::tile_bounds::TileBounds;
 
 /// A loaded road, ready for evaluation.
 ///
@@ -27,6 +28,8 @@ pub struct Road {
     pub(crate) origin: GlobalOrigin,
     /// Reciprocals of the increments, for the cache prefetch of elevation lookups.
     pub(crate) prefetch_hint: PrefetchHint,
+    /// Where the cells of each tile lie, for a grid read in place.
+    pub(crate) tile_bounds: TileBounds,
     /// The reference behaviour the road follows.
     pub(crate) compat: Compat,
     /// Whether each preparation reports the road's statistics (a scan of the grid).
@@ -164,6 +167,7 @@ impl Road {
         self.line.update_caches();
         self.index = std::mem::take(&mut self.index).rebuilt(&self.line);
         self.prefetch_hint = PrefetchHint::new(self.line.u_inc, &self.grid);
+        self.tile_bounds = TileBounds::new(&self.line, &self.grid);
     }
 
     /// The figures of the road as it is now.

@@ -25,6 +25,7 @@
 
 use crate::base::mapped_file::Fault;
 use crate::model::in_place::{apply, change_numbers, read_words, Records, RowWalker, ValueOp};
+use std::num::NonZeroU32;
 use std::sync::atomic::{fence, AtomicU32, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex, PoisonError};
 
@@ -78,31 +79,16 @@ enum FillError {
 /// from being filled again, nothing worse).
 #[derive(Debug)]
 pub(crate) struct Pin {
-    slot: usize,
-    /// The first cross and long section of the tile.
-    iu0: usize,
-    iv0: usize,
-    /// The tile's values in the pool.
-    values: *const f32,
+    /// The slot, plus one (four bytes, none of them zero: a contact point moves its pins
+    /// on with its windows when it enters a tile).
+    slot: NonZeroU32,
 }
 
-// SAFETY: the pointer points into the pool's slot, which the pin keeps from being
-// written; it is only read.
-unsafe impl Send for Pin {}
-// SAFETY: as for `Send`.
-unsafe impl Sync for Pin {}
-
-impl Pin {
-    /// The tile's values, long section by long section, [`TILE_STRIDE`] apart (valid as
-    /// long as the pool lives and the pin is not handed back).
-    pub(crate) fn values(&self) -> *const f32 {
-        self.values
-    }
-
-    /// The first cross and long section of the tile.
-    pub(crate) fn origin(&self) -> (usize, usize) {
-        (self.iu0, self.iv0)
-    }
+/// The first cross and long section of the tile holding the cell whose first corner is
+/// (`iu`, `iv`).
+#[inline]
+pub(crate) fn tile_origin(iu: usize, iv: usize) -> (usize, usize) {
+    (iu / TILE_U * TILE_U, iv / TILE_V * TILE_V)
 }
 
 /// What filling needs, behind the pool's lock.
@@ -225,12 +211,15 @@ impl Tiles {
     }
 
     /// Pins the tile holding the cell whose first corner is (`iu`, `iv`), when it is
-    /// present (nothing is read from the file; nothing can panic). The pin is handed
-    /// back to this pool ([`Tiles::unpin`]).
-    pub(crate) fn pin(&self, iu: usize, iv: usize) -> Option<Pin> {
+    /// present (nothing is read from the file; nothing can panic), with where its values
+    /// lie, long section by long section, [`TILE_STRIDE`] apart (valid as long as the
+    /// pool lives and the pin is not handed back). The pin is handed back to this pool
+    /// ([`Tiles::unpin`]).
+    pub(crate) fn pin(&self, iu: usize, iv: usize) -> Option<(Pin, *const f32)> {
         let (id, _) = self.place(iu, iv)?;
         let s = self.directory.get(id)?.load(Ordering::Acquire).wrapping_sub(1) as usize;
         let slot = self.slots.get(s)?;
+        let pin = Pin { slot: u32::try_from(s + 1).ok().and_then(NonZeroU32::new)? };
         let values = self.values.get(s * TILE_LEN..)?.as_ptr().cast::<f32>();
         let mut pins = slot.pins.load(Ordering::Relaxed);
         loop {
@@ -247,7 +236,7 @@ impl Tiles {
             slot.pins.fetch_sub(1, Ordering::Release);
             return None;
         }
-        Some(Pin { slot: s, iu0: iu / TILE_U * TILE_U, iv0: iv / TILE_V * TILE_V, values })
+        Some((pin, values))
     }
 
     /// How many pins the pool's slots hold now.
@@ -259,7 +248,7 @@ impl Tiles {
 
     /// Hands back a pin of this pool: its slot may be filled again once nobody else pins it.
     pub(crate) fn unpin(&self, pin: Pin) {
-        if let Some(slot) = self.slots.get(pin.slot) {
+        if let Some(slot) = self.slots.get(pin.slot.get() as usize - 1) {
             slot.pins.fetch_sub(1, Ordering::Release);
         }
     }

@@ -389,7 +389,7 @@ impl ContactPoint {
     /// unpinned; `None` where the tile is not present.
     fn enter_window(&mut self, iu: usize, iv: usize) -> Option<()> {
         let tiles = self.road.grid.tiles()?;
-        let pin = tiles.pin(iu, iv)?;
+        let (pin, values) = tiles.pin(iu, iv)?;
         let w = &mut self.windows;
         // The pool is kept from the first tile entered on (a new road makes new windows,
         // so another pool here would be a contact point's mistake: its pins go back first).
@@ -398,7 +398,7 @@ impl ContactPoint {
             self.plain.clear_windows();
             w.tiles = Some(tiles.clone());
         }
-        if let Some(gone) = self.plain.enter_window(pin, &mut w.pins) {
+        if let Some(gone) = self.plain.enter_window((iu, iv), pin, values, &mut w.pins) {
             tiles.unpin(gone);
         }
         Some(())

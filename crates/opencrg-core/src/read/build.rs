@@ -168,6 +168,7 @@ impl Road {
             modifiers,
             index: SampleIndex::default(),
             prefetch_hint: Default::default(),
+            tile_bounds: Default::default(),
             compat: load.compat,
             report_statistics: load.report_statistics,
             events: Vec::new(),
