@@ -28,7 +28,8 @@ pub(crate) fn inner_bound(first: f64, last: f64, inc: f64, limit: f64) -> f64 {
 }
 
 /// The smallest `x` for which `(x - first) / inc` is at least `limit`, found within a few
-/// steps of `first + limit * inc`; NaN where it is not.
+/// steps of `first + limit * inc`; NaN where it is not. The largest `x` below `limit` is
+/// the one just under it.
 fn at_least(first: f64, inc: f64, limit: f64) -> f64 {
     let frac = |x: f64| (x - first) / inc;
     let mut x = first + limit * inc;
@@ -49,11 +50,6 @@ fn at_least(first: f64, inc: f64, limit: f64) -> f64 {
         }
     }
     f64::NAN
-}
-
-/// The largest `x` for which `(x - first) / inc` lies below `limit` (see [`at_least`]).
-fn below(first: f64, inc: f64, limit: f64) -> f64 {
-    at_least(first, inc, limit).next_down()
 }
 
 /// The bounds of the cells of each tile column (along u) and tile row (across, in v) of
@@ -77,20 +73,18 @@ struct Axis {
 
 impl Axis {
     /// The first and last position of the cells of each tile: those of the tile's
-    /// sections, within the range whose fractions lie below the last section's.
+    /// sections, within the range whose fractions lie below the last section's. A tile
+    /// ends just under where the next begins.
     fn bounds(&self, sections: usize) -> Box<[[f64; 2]]> {
         let Axis { first, last, inc, last_frac, tile } = *self;
         let (lo, hi) = (first, inner_bound(first, last, inc, last_frac));
         let tiles = sections.saturating_sub(1).div_ceil(tile);
-        (0..tiles)
-            .map(|t| {
-                let (from, to) = ((t * tile) as f64, ((t + 1) * tile) as f64);
-                [
-                    if t == 0 { lo } else { at_least(first, inc, from).max(lo) },
-                    below(first, inc, to.min(last_frac)).min(hi),
-                ]
-            })
-            .collect()
+        // Where each tile begins, and where the range ends just above the last one.
+        let starts: Vec<f64> = (0..tiles)
+            .map(|t| if t == 0 { lo } else { at_least(first, inc, (t * tile) as f64).max(lo) })
+            .chain([hi.next_up()])
+            .collect();
+        starts.windows(2).map(|w| [w[0], w[1].next_down().min(hi)]).collect()
     }
 }
 

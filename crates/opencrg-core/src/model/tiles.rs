@@ -84,11 +84,11 @@ pub(crate) struct Pin {
     slot: NonZeroU32,
 }
 
-/// The first cross and long section of the tile holding the cell whose first corner is
+/// The tile (its column along, its row across) holding the cell whose first corner is
 /// (`iu`, `iv`).
-#[inline]
-pub(crate) fn tile_origin(iu: usize, iv: usize) -> (usize, usize) {
-    (iu / TILE_U * TILE_U, iv / TILE_V * TILE_V)
+#[inline(always)]
+pub(crate) fn tile_of(iu: usize, iv: usize) -> (usize, usize) {
+    (iu / TILE_U, iv / TILE_V)
 }
 
 /// What filling needs, behind the pool's lock.
@@ -256,7 +256,7 @@ impl Tiles {
     /// The tile of the cell (`iu`, `iv`) and where the cell's first corner lies in it.
     #[inline(always)]
     fn place(&self, iu: usize, iv: usize) -> Option<(usize, usize)> {
-        let (tu, tv) = (iu / TILE_U, iv / TILE_V);
+        let (tu, tv) = tile_of(iu, iv);
         let id = tu * self.tiles_v + tv;
         let at = (iv - tv * TILE_V) * TILE_STRIDE + (iu - tu * TILE_U);
         (tv < self.tiles_v && id < self.directory.len()).then_some((id, at))

@@ -10,7 +10,7 @@
 use crate::model::grid::{prefetch_cell_far_from, prefetch_path_from, Store, VLayout};
 use crate::model::road::Road;
 use crate::model::tile_bounds::{inner_bound, TileBounds};
-use crate::model::tiles::{tile_origin, Pin, Tiles, TILE_STRIDE, TILE_U, TILE_V};
+use crate::model::tiles::{tile_of, Pin, Tiles, TILE_STRIDE, TILE_U, TILE_V};
 use crate::query::eval::EvalOptions;
 use crate::query::interpolation::{bilinear, corner_terms, lerp_at, lerp_terms};
 
@@ -52,9 +52,9 @@ pub(crate) struct PlainGrid {
     u_inc: f64,
     v_first: f64,
     v_inc: f64,
-    /// The tiles of a grid read in place and where their cells lie (null for a grid in
-    /// memory).
+    /// The tiles of a grid read in place (null for a grid in memory).
     tiles: *const Tiles,
+    /// Where the cells of each tile lie (the road's; empty for a grid in memory).
     bounds: *const TileBounds,
     nu: usize,
     mean: f64,
@@ -160,7 +160,7 @@ impl PlainGrid {
             v_first: g.v_first,
             v_inc: g.v_inc,
             tiles: g.tiles().map_or(std::ptr::null(), std::sync::Arc::as_ptr),
-            bounds: if g.is_in_place() { &road.tile_bounds } else { std::ptr::null() },
+            bounds: &road.tile_bounds,
             nu: if g.is_in_place() { TILE_STRIDE } else { l.n },
             mean: g.mean,
             line_z: term(&l.z, l.z_first),
@@ -250,14 +250,15 @@ impl PlainGrid {
         values: *const f32,
         pins: &mut [Option<Pin>; WINDOWS],
     ) -> Option<Pin> {
-        let (iu0, iv0) = tile_origin(iu, iv);
+        let (tu, tv) = tile_of(iu, iv);
         // SAFETY: the bounds belong to the road, which is alive while the contact point
-        // holding this `PlainGrid` holds it (null for a grid in memory).
-        let bounds = unsafe { self.bounds.as_ref() };
-        let range = bounds
-            .and_then(|b| Some((b.along(iu0 / TILE_U)?, b.across(iv0 / TILE_V)?)))
-            .map_or([f64::NAN; 4], |([u_from, u_to], [v_from, v_to])| [u_from, u_to, v_from, v_to]);
-        let z = values.wrapping_sub(iv0 * TILE_STRIDE + iu0);
+        // holding this `PlainGrid` holds it.
+        let bounds = unsafe { &*self.bounds };
+        let range = match (bounds.along(tu), bounds.across(tv)) {
+            (Some([u_from, u_to]), Some([v_from, v_to])) => [u_from, u_to, v_from, v_to],
+            _ => [f64::NAN; 4],
+        };
+        let z = values.wrapping_sub(tv * TILE_V * TILE_STRIDE + tu * TILE_U);
         let gone = pins[WINDOWS - 1].take();
         for k in (1..WINDOWS).rev() {
             self.windows[k] = self.windows[k - 1];
