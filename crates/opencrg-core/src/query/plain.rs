@@ -76,7 +76,7 @@ pub(crate) const WINDOWS: usize = 4;
 /// Where the common case applies in one window, and where the window's values lie.
 #[derive(Debug, Clone, Copy)]
 struct Bounds {
-    /// u from, u to, v from, v to.
+    /// u from, u to, v from, v to: all four NaN or none (see [`Bounds::new`]).
     range: [f64; 4],
     /// The values, long section by long section, `nu` apart: the grid in memory, or a tile
     /// rebased so that the first corner of cell (iu, iv) is at `iv * nu + iu` for every
@@ -87,18 +87,30 @@ struct Bounds {
 impl Bounds {
     const NONE: Bounds = Bounds { range: [f64::NAN; 4], z: std::ptr::null() };
 
+    /// The window of `range` (u from, u to, v from, v to) with its values at `z`; a
+    /// window that holds no point where any bound is NaN.
+    fn new(range: [f64; 4], z: *const f32) -> Bounds {
+        match range.iter().any(|b| b.is_nan()) {
+            true => Bounds { z, ..Bounds::NONE },
+            false => Bounds { range, z },
+        }
+    }
+
     /// Whether (u, v) lies in the window (false for NaN). Across first, as a branch of
     /// its own (written as one condition, the compiler tests u first): the windows a
     /// contact point shared by four wheels tries before the right one are mostly those
     /// of the other wheel track, on other long sections (with a car's four wheels,
     /// 2.6 comparisons a lookup in the windows tried before the right one instead of 3.4).
+    /// Each upper bound is tested as "not above", which the processor compares with the
+    /// bound where it lies in memory (a NaN coordinate or window already failed the test
+    /// of the lower bound, and a window's bounds are all NaN or none).
     #[inline(always)]
     fn holds(&self, u: f64, v: f64) -> bool {
         let [u_lo, u_hi, v_lo, v_hi] = self.range;
-        if !(v >= v_lo && v <= v_hi) {
+        if !(v >= v_lo) || v > v_hi {
             return false;
         }
-        u >= u_lo && u <= u_hi
+        u >= u_lo && !(u > u_hi)
     }
 }
 
@@ -150,7 +162,7 @@ impl PlainGrid {
         // A grid read in place has no window yet.
         let mut windows = [Bounds::NONE; WINDOWS];
         if !g.is_in_place() {
-            windows[0] = Bounds { range, z: g.memory_ptr() };
+            windows[0] = Bounds::new(range, g.memory_ptr());
         }
         PlainGrid {
             windows,
@@ -264,7 +276,7 @@ impl PlainGrid {
             self.windows[k] = self.windows[k - 1];
             pins[k] = pins[k - 1].take();
         }
-        self.windows[0] = Bounds { range, z };
+        self.windows[0] = Bounds::new(range, z);
         pins[0] = Some(pin);
         gone
     }
@@ -376,5 +388,45 @@ impl CellTerms {
     #[inline(always)]
     pub(crate) fn of(&self, cell: &PlainCell) -> bool {
         self.iu == cell.iu && self.iv == cell.iv
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const RANGE: [f64; 4] = [1.0, 2.0, -1.0, 1.0];
+
+    #[test]
+    fn a_window_holds_its_bounds_and_nothing_beyond() {
+        let w = Bounds::new(RANGE, std::ptr::null());
+        let cases = [
+            (1.0, -1.0, true),
+            (2.0, 1.0, true),
+            (1.5, 0.0, true),
+            (2f64.next_up(), 0.0, false),
+            (1f64.next_down(), 0.0, false),
+            (1.5, 1f64.next_up(), false),
+            (1.5, (-1f64).next_down(), false),
+            (f64::NAN, 0.0, false),
+            (1.5, f64::NAN, false),
+            (f64::INFINITY, 0.0, false),
+            (1.5, f64::NEG_INFINITY, false),
+        ];
+        for (u, v, inside) in cases {
+            assert_eq!(w.holds(u, v), inside, "({u}, {v})");
+        }
+    }
+
+    #[test]
+    fn a_window_with_a_nan_bound_holds_nothing() {
+        for k in 0..4 {
+            let mut range = RANGE;
+            range[k] = f64::NAN;
+            let w = Bounds::new(range, std::ptr::null());
+            for (u, v) in [(1.5, 0.0), (1e300, 0.0), (-1e300, 0.0), (1.5, 1e300), (1.5, -1e300)] {
+                assert!(!w.holds(u, v), "bound {k} NaN holds ({u}, {v})");
+            }
+        }
     }
 }
