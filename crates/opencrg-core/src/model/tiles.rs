@@ -239,6 +239,23 @@ impl Tiles {
         Some((pin, values))
     }
 
+    /// Asks the processor to start loading the first values of the long sections around
+    /// the cell (`iu`, `iv`)'s (one before, two after) in its tile, when the tile is present
+    /// (not pinned: the slot may be filled anew meanwhile, which costs only the loads).
+    /// Only addresses are computed.
+    pub(crate) fn ask_for_start(&self, iu: usize, iv: usize) {
+        let Some((id, at)) = self.place(iu, iv) else { return };
+        let s = self.directory[id].load(Ordering::Relaxed).wrapping_sub(1) as usize;
+        if let Some(v) = self.values.get(s * TILE_LEN..).filter(|_| s < self.slots.len()) {
+            let p = v.as_ptr();
+            let row = at / TILE_STRIDE;
+            for r in row.saturating_sub(1)..(row + 3).min(TILE_V + 1) {
+                crate::base::memory::prefetch(p.wrapping_add(r * TILE_STRIDE));
+                crate::base::memory::prefetch(p.wrapping_add(r * TILE_STRIDE + 15));
+            }
+        }
+    }
+
     /// How many pins the pool's slots hold now.
     #[cfg(test)]
     pub(crate) fn pinned(&self) -> usize {
