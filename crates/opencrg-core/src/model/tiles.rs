@@ -245,14 +245,16 @@ impl Tiles {
     /// Only addresses are computed.
     pub(crate) fn ask_for_start(&self, iu: usize, iv: usize) {
         let Some((id, at)) = self.place(iu, iv) else { return };
-        let s = self.directory[id].load(Ordering::Relaxed).wrapping_sub(1) as usize;
-        if let Some(v) = self.values.get(s * TILE_LEN..).filter(|_| s < self.slots.len()) {
-            let p = v.as_ptr();
-            let row = at / TILE_STRIDE;
-            for r in row.saturating_sub(1)..(row + 3).min(TILE_V + 1) {
-                crate::base::memory::prefetch(p.wrapping_add(r * TILE_STRIDE));
-                crate::base::memory::prefetch(p.wrapping_add(r * TILE_STRIDE + 15));
-            }
+        let Some(entry) = self.directory.get(id) else { return };
+        let s = entry.load(Ordering::Relaxed).wrapping_sub(1) as usize;
+        if s >= self.slots.len() {
+            return;
+        }
+        let p = self.values[s * TILE_LEN..].as_ptr();
+        let row = at / TILE_STRIDE;
+        for r in row.saturating_sub(1)..(row + 3).min(TILE_V + 1) {
+            crate::base::memory::prefetch(p.wrapping_add(r * TILE_STRIDE));
+            crate::base::memory::prefetch(p.wrapping_add(r * TILE_STRIDE + 15));
         }
     }
 

@@ -39,9 +39,10 @@ enum LineTerm {
 ///
 /// The common case applies inside its windows, tried in turn: for a grid in memory one, the
 /// road's range and its values; for a grid read in place up to [`WINDOWS`], each the cells
-/// of one pinned tile (see [`PlainGrid::enter_window`]), whose values its base and `nu` then
-/// address as they address a grid in memory. A point outside them takes another path,
-/// which moves a window. The unused windows' bounds are NaN.
+/// of one pinned tile (see [`PlainGrid::enter_window`]; at first without the tile's last
+/// cross sections, see [`EDGE`]), whose values its base and `nu` then address as they
+/// address a grid in memory. A point outside them takes another path, which widens or
+/// moves a window. The unused windows' bounds are NaN.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PlainGrid {
     windows: [Bounds; WINDOWS],
@@ -269,8 +270,9 @@ impl PlainGrid {
     /// with its values at `values` ([`Tiles::pin`]), window 0, the windows before it
     /// moving one on (the last one's tile is the caller's to hand back: `pins` holds the
     /// pins of the windows as they were, and is moved on alike). The common case then
-    /// applies to the points whose cells lie in the tile (and in the road's range), found
-    /// exactly as [`PlainGrid::cell`] finds them, and reads their values from the tile.
+    /// applies to the points whose cells lie in the tile (and in the road's range; entered
+    /// at the tile's start, not yet its end: see [`EDGE`]), found exactly as
+    /// [`PlainGrid::cell`] finds them, and reads their values from the tile.
     pub(crate) fn enter_window(
         &mut self,
         (iu, iv): (usize, usize),
