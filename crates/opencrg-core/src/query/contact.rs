@@ -632,4 +632,34 @@ mod tests {
         assert_eq!(tiles.pinned(), 0);
         std::fs::remove_file(&path).ok();
     }
+
+    /// One contact point for the four wheels of a car driving along a road read in place
+    /// (a pool holding the whole road): each wheel's tile has a window of its own, which
+    /// the wheel reaches the end of (where the window widens) while other wheels' windows
+    /// were entered after it; every answer is the road in memory's, bit for bit.
+    #[test]
+    fn a_contact_point_shared_by_four_wheels_answers_across_tile_ends() {
+        use crate::model::road::{LoadOptions, ReadInPlace};
+        let steps = 6 * TILE_U as u32;
+        let length = 0.01 * f64::from(steps);
+        let spec =
+            RoadSpec::straight(length, 2.0, 0.01, 0.01).with_elevation(|u, v| 0.01 * (1.3 * u).sin() + 0.005 * v);
+        let path = std::env::temp_dir().join(format!("opencrg-shared-{}.crg", std::process::id()));
+        crate::write(&spec.build().unwrap(), &path, crate::DataFormat::Krbi).unwrap();
+        let load =
+            |in_place| Arc::new(Road::load_with(&path, LoadOptions { in_place, ..LoadOptions::default() }).unwrap());
+        let (placed, memory) = (load(ReadInPlace::Always), load(ReadInPlace::Never));
+        let mut car = ContactPoint::new(placed);
+        let expected = ContactPoint::new(memory);
+        // Rear axle from 0.1 m on, 3 cm a step, front axle 1.3 m ahead, weaving 4 cm.
+        for step in 0..(length / 0.03) as u32 - 50 {
+            let rear = 0.1 + 0.03 * f64::from(step);
+            for (u, side) in [(rear + 1.3, 1.0), (rear + 1.3, -1.0), (rear, 1.0), (rear, -1.0)] {
+                let v = side * 0.7 + 0.04 * (u / 1.7).sin();
+                let z = car.uv_to_z_plain(u, v).or_else(|| car.z_of_found(u, v).ok());
+                assert_eq!(z.map(f64::to_bits), expected.uv_to_z(u, v).ok().map(f64::to_bits), "({u}, {v})");
+            }
+        }
+        std::fs::remove_file(&path).ok();
+    }
 }
