@@ -239,19 +239,20 @@ impl Tiles {
         Some((pin, values))
     }
 
-    /// Asks the processor to start loading the first values of the long sections around
-    /// the cell (`iu`, `iv`)'s (one before, two after) in its tile, when the tile is present
-    /// (not pinned: the slot may be filled anew meanwhile, which costs only the loads).
-    /// Only addresses are computed.
-    pub(crate) fn ask_for_start(&self, iu: usize, iv: usize) {
-        let Some((id, at)) = self.place(iu, iv) else { return };
+    /// Asks the processor to start loading what a wheel at the cell (`iu`, `iv`) reads first
+    /// in the next tile along: the first values there of the long sections around the
+    /// cell's (one before, two after), when that tile is present (not pinned: the slot may
+    /// be filled anew meanwhile, which costs only the loads). Only addresses are computed.
+    pub(crate) fn ask_for_next_along(&self, iu: usize, iv: usize) {
+        let (tu, tv) = tile_of(iu, iv);
+        let Some((id, _)) = self.place((tu + 1) * TILE_U, iv) else { return };
         let Some(entry) = self.directory.get(id) else { return };
         let s = entry.load(Ordering::Relaxed).wrapping_sub(1) as usize;
         if s >= self.slots.len() {
             return;
         }
         let p = self.values[s * TILE_LEN..].as_ptr();
-        let row = at / TILE_STRIDE;
+        let row = iv - tv * TILE_V;
         for r in row.saturating_sub(1)..(row + 3).min(TILE_V + 1) {
             crate::base::memory::prefetch(p.wrapping_add(r * TILE_STRIDE));
             crate::base::memory::prefetch(p.wrapping_add(r * TILE_STRIDE + 15));

@@ -3,7 +3,7 @@
 use crate::base::error::{Error, Result};
 use crate::base::settings::{opt, Settings};
 use crate::model::road::Road;
-use crate::model::tiles::{Pin, Tiles, TILE_U};
+use crate::model::tiles::{Pin, Tiles};
 use crate::query::eval::{self, EvalOptions};
 use crate::query::plain::{near_tile_end, CellTerms, PlainCell, PlainGrid, WINDOWS};
 use crate::query::search::{self, History, DEFAULT_HISTORY};
@@ -413,10 +413,10 @@ impl ContactPoint {
     }
 
     /// Asks the processor for the values a wheel at the cell (`iu`, `iv`) reads first in
-    /// the next tile along, when that tile is present.
+    /// the next tile along ([`Tiles::ask_for_next_along`]).
     fn ask_for_next_tile(&self, iu: usize, iv: usize) {
         if let Some(tiles) = self.road.grid.tiles() {
-            tiles.ask_for_start((iu / TILE_U + 1) * TILE_U, iv);
+            tiles.ask_for_next_along(iu, iv);
         }
     }
 
@@ -640,6 +640,7 @@ mod tests {
     #[test]
     fn a_contact_point_shared_by_four_wheels_answers_across_tile_ends() {
         use crate::model::road::{LoadOptions, ReadInPlace};
+        use crate::model::tiles::TILE_U;
         let steps = 6 * TILE_U as u32;
         let length = 0.01 * f64::from(steps);
         let spec =
