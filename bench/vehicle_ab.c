@@ -17,7 +17,9 @@
  * (default 61), AB_MODES (own,shared: a contact point per wheel, one for the four),
  * AB_IN_PLACE (a value of OPENCRG_IN_PLACE per library, comma-separated, set while that
  * library opens the road: one build read in place against itself in memory, the same
- * library named twice). Output per case and library:
+ * library named twice), AB_WARM (1: every library drives the whole path once before the
+ * rounds, so that a road read in place has every tile of it decoded, at 1 and 5 m/s too).
+ * Output per case and library:
  *   ab CALL SPEED MODE LIB[:in_place=VALUE] ns MEDIAN min MIN max MAX ratio MEDIAN q1 Q1 q3 Q3
  * ns: nanoseconds per call (median, smallest and largest over the rounds); ratio: the
  * first library's time over this one's, per round: its median and quartiles (above 1:
@@ -135,13 +137,15 @@ static double run(const struct Lib *l, enum Call c, int shared, const struct Pat
 
 static double at(double *sorted, int n, double q) { return sorted[(int)(q * (n - 1) + 0.5)]; }
 
-/* One case: every library drives the path's first chunk, then the rounds in turns (the
- * order flipping each round); prints each library's times and ratios. */
+/* One case: every library drives the path's first chunk (the whole path with AB_WARM),
+ * then the rounds in turns (the order flipping each round); prints each library's times
+ * and ratios. */
 static void one_case(const struct Lib *libs, int nl, enum Call c, double speed, int shared, const struct Path *p, int rounds)
 {
     double *t = malloc(sizeof(double) * rounds * nl), *sorted = malloc(sizeof(double) * rounds);
+    long warm = getenv("AB_WARM") && atoi(getenv("AB_WARM")) ? (long)rounds * CHUNK : CHUNK;
     for (int l = 0; l < nl; l++)
-        run(&libs[l], c, shared, p, 0, CHUNK);
+        run(&libs[l], c, shared, p, 0, warm);
     for (int r = 0; r < rounds; r++)
         for (int k = 0; k < nl; k++) {
             int l = (r & 1) ? nl - 1 - k : k;

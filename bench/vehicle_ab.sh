@@ -7,7 +7,7 @@
 #
 # usage: bench/vehicle_ab.sh BASELINE.so [OTHER.so ...]
 # Environment: ROAD_FILES (default: the straight 80 MB road and the winding road with
-# slope and banking), AB_CALLS, AB_SPEEDS, AB_ROUNDS, AB_MODES, AB_IN_PLACE (see
+# slope and banking), AB_CALLS, AB_SPEEDS, AB_ROUNDS, AB_MODES, AB_IN_PLACE, AB_WARM (see
 # bench/vehicle_ab.c). This build in memory against itself read in place, in one process:
 #   AB_IN_PLACE=never,always bench/vehicle_ab.sh target/release/libopencrg.so
 set -euo pipefail
