@@ -1,9 +1,9 @@
 /*
  * What reading a tile of a road read in place costs: one contact point asks u/v to z at
- * one point of every tile along the road (a tile holds TILE_U cross sections: the points
- * lie one cross section more apart), in strips 0.8 m apart across it, so that every call
- * reads a tile from the file; prints
- * the time of opening and the time per call, which is one tile's reading. Run it with
+ * one point of every half of a tile along the road (a tile is read from the file half by
+ * half, HALF_U cross sections each: the points lie one cross section more apart), in
+ * strips 0.8 m apart across it, so that every call reads half a tile from the file;
+ * prints the time of opening and the time per call, which is one half's reading. Run it with
  * OPENCRG_IN_PLACE=always on a binary road whose file the system has cached (read it
  * once first); a road whose tiles the pool (OPENCRG_IN_PLACE_CACHE) all holds measures
  * nothing after its first pass.
@@ -13,10 +13,10 @@
  */
 #include "road_open.h"
 
-/* Cross sections a tile holds (opencrg_core::tiles::TILE_U; -DTILE_U=N for a build of
- * another tile size). */
-#ifndef TILE_U
-#define TILE_U 512
+/* Cross sections of the half of a tile read at once (opencrg_core::tiles::HALF_U;
+ * -DHALF_U=N for a build of another tile size). */
+#ifndef HALF_U
+#define HALF_U 512
 #endif
 
 int main(int argc, char **argv)
@@ -36,7 +36,7 @@ int main(int argc, char **argv)
     crgDataSetGetURange(data, &u0, &u1);
     crgDataSetGetVRange(data, &v0, &v1);
     crgDataSetGetIncrements(data, &du, &dv);
-    double step = (TILE_U + 1) * du;
+    double step = (HALF_U + 1) * du;
     long calls = 0;
     start = now();
     for (double v = v0 + 0.5; v < v1 - 0.5; v += 0.8)
@@ -48,6 +48,6 @@ int main(int argc, char **argv)
         fprintf(stderr, "tile_fill: %s is too short or too narrow\n", argv[1]);
         return 1;
     }
-    printf("open %.2f s; %ld tiles read, %.1f us each (heights' sum %.6f)\n", opened, calls, took / calls * 1e6, sum);
+    printf("open %.2f s; %ld halves of tiles read, %.1f us each (heights' sum %.6f)\n", opened, calls, took / calls * 1e6, sum);
     return 0;
 }

@@ -255,11 +255,11 @@ fn written_back_a_road_in_place_is_the_road_in_memory() {
 #[test]
 fn threads_share_one_road_in_place() {
     let dir = folder("threads");
-    // 19 tiles along, 3 across.
+    // 10 tiles along (19 halves), 3 across.
     let spec = RoadSpec::straight(480.0, 4.0, 0.05, 0.1).with_elevation(surface);
     let (placed, memory) = both(&spec, &dir, "long", DataFormat::Krbi, Compat::Upstream);
-    // A pool of the fewest slots (16 of the road's 57 tiles): the threads evict each
-    // other's tiles and read tiles at the same time all the time.
+    // A pool of the fewest slots (16 of the road's 30 tiles): the threads evict each
+    // other's tiles and read tiles and halves of tiles at the same time all the time.
     let path = dir.join("long_KRBI.crg");
     let small = Road::load_with(
         &path,
@@ -283,7 +283,48 @@ fn threads_share_one_road_in_place() {
                 });
             }
         });
-        assert!(road.grid().tiles_read() >= 57, "{} tiles read", road.grid().tiles_read());
+        assert!(road.grid().tiles_read() >= 57, "{} halves of tiles read", road.grid().tiles_read());
+    }
+}
+
+/// Threads on one tile of a road read in place, in a new pool each round: some read the
+/// tile's first half through their windows while others reach its second half, which one
+/// of them reads into the same slot meanwhile. Every answer is the road in memory's, bit
+/// for bit.
+#[test]
+fn a_tile_read_half_by_half_while_threads_read_it() {
+    let dir = folder("halves");
+    // One tile along (1024 cross sections at 1 cm) and a bit, 2 across.
+    let spec = RoadSpec::straight(10.5, 2.0, 0.01, 0.1).with_elevation(surface);
+    let (_, memory) = both(&spec, &dir, "halves", DataFormat::Krbi, Compat::Upstream);
+    let memory = Arc::new(memory);
+    let path = dir.join("halves_KRBI.crg");
+    for round in 0..40 {
+        let road = Arc::new(
+            Road::load_with(&path, LoadOptions { in_place: ReadInPlace::Always, ..LoadOptions::default() }).unwrap(),
+        );
+        std::thread::scope(|s| {
+            for t in 0..4 {
+                let (road, memory) = (road.clone(), memory.clone());
+                s.spawn(move || {
+                    let (mut a, b) = (ContactPoint::new(road), ContactPoint::new(memory));
+                    for k in 0..4000 {
+                        // Threads 0 and 1 stay in the first half; 2 and 3 drive from it
+                        // into the second, each at its own pace.
+                        let reach = if t < 2 { 5.0 } else { 10.2 };
+                        let u = 0.02 + (f64::from(k) * 0.0031 * f64::from(t + 1 + round % 3)) % reach;
+                        let v = -0.7 + 0.2 * f64::from(t) + 0.05 * (f64::from(k) * 0.1).sin();
+                        let z = a.uv_to_z_plain(u, v).map(Ok).unwrap_or_else(|| a.z_of_found(u, v));
+                        assert_eq!(
+                            bits(z.map(|z| [z])),
+                            bits(b.uv_to_z(u, v).map(|z| [z])),
+                            "thread {t} at ({u}, {v})"
+                        );
+                    }
+                });
+            }
+        });
+        assert!(road.grid().tiles_read() >= 2, "round {round}: {} halves read", road.grid().tiles_read());
     }
 }
 

@@ -10,7 +10,7 @@
 
 use crate::model::grid::Grid;
 use crate::model::refline::RefLine;
-use crate::model::tiles::{TILE_U, TILE_V};
+use crate::model::tiles::{HALF_U, TILE_V};
 
 /// The largest `b <= last` for which `(b - first) / inc` lies below `limit` (and so
 /// does that of every x from `first` to `b`: subtraction and division by a positive
@@ -52,8 +52,9 @@ fn at_least(first: f64, inc: f64, limit: f64) -> f64 {
     f64::NAN
 }
 
-/// The bounds of the cells of each tile column (along u) and tile row (across, in v) of
-/// a grid read in place; empty for a grid in memory.
+/// The bounds of the cells of each half of a tile column (along u, [`HALF_U`] cross
+/// sections) and of each tile row (across, in v) of a grid read in place; empty for a
+/// grid in memory.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct TileBounds {
     along: Box<[[f64; 2]]>,
@@ -95,16 +96,17 @@ impl TileBounds {
             return TileBounds::default();
         }
         let along =
-            Axis { first: line.u_first, last: line.u_last, inc: line.u_inc, last_frac: line.last_frac, tile: TILE_U };
+            Axis { first: line.u_first, last: line.u_last, inc: line.u_inc, last_frac: line.last_frac, tile: HALF_U };
         let across =
             Axis { first: grid.v_first, last: grid.v_last, inc: grid.v_inc, last_frac: grid.last_frac, tile: TILE_V };
         TileBounds { along: along.bounds(grid.nu), across: across.bounds(grid.nv) }
     }
 
-    /// The first and last u of the cells of the tiles `tu` along (`None` beyond the grid).
+    /// The first and last u of the cells of the halves of tiles `hu` along (the cross
+    /// sections from `hu * HALF_U` on; `None` beyond the grid).
     #[inline]
-    pub(crate) fn along(&self, tu: usize) -> Option<[f64; 2]> {
-        self.along.get(tu).copied()
+    pub(crate) fn along(&self, hu: usize) -> Option<[f64; 2]> {
+        self.along.get(hu).copied()
     }
 
     /// The first and last v of the cells of the tiles `tv` across (`None` beyond the grid).
@@ -126,9 +128,9 @@ mod tests {
     fn bounds_hold_exactly_the_cells_of_their_tiles() {
         let frac = |a: &Axis, x: f64| (x - a.first) / a.inc;
         for (first, inc, sections, tile) in [
-            (0.0, 0.01, 5000, TILE_U),
-            (-3.7, 0.013, 2049, TILE_U),
-            (12345.678, 0.0097, 1537, TILE_U),
+            (0.0, 0.01, 5000, HALF_U),
+            (-3.7, 0.013, 2049, HALF_U),
+            (12345.678, 0.0097, 1537, HALF_U),
             (-2.0, 0.01, 401, TILE_V),
             (-1.234, 0.0233, 97, TILE_V),
         ] {

@@ -397,7 +397,12 @@ impl ContactPoint {
     /// unpinned; `None` where the tile is not present.
     fn enter_window(&mut self, iu: usize, iv: usize) -> Option<()> {
         let tiles = self.road.grid.tiles()?;
-        let (pin, values) = tiles.pin(iu, iv)?;
+        let (pin, values, halves) = tiles.pin(iu, iv)?;
+        // The cell's half of the tile not read yet: the caller reads it first.
+        if halves & (1 << crate::model::tiles::half_of(iu)) == 0 {
+            tiles.unpin(pin);
+            return None;
+        }
         let w = &mut self.windows;
         // The pool is kept from the first tile entered on (a new road makes new windows,
         // so another pool here would be a contact point's mistake: its pins go back first).
@@ -406,7 +411,7 @@ impl ContactPoint {
             self.plain.clear_windows();
             w.tiles = Some(tiles.clone());
         }
-        if let Some(gone) = self.plain.enter_window((iu, iv), pin, values, &mut w.pins) {
+        if let Some(gone) = self.plain.enter_window((iu, iv), pin, values, halves, &mut w.pins) {
             tiles.unpin(gone);
         }
         Some(())

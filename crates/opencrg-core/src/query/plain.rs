@@ -10,7 +10,7 @@
 use crate::model::grid::{prefetch_cell_far_from, prefetch_path_from, Store, VLayout};
 use crate::model::road::Road;
 use crate::model::tile_bounds::{inner_bound, TileBounds};
-use crate::model::tiles::{tile_of, Pin, Tiles, TILE_STRIDE, TILE_U, TILE_V};
+use crate::model::tiles::{half_of, tile_of, Pin, Tiles, HALF_U, TILE_STRIDE, TILE_U, TILE_V};
 use crate::query::eval::EvalOptions;
 use crate::query::interpolation::{bilinear, corner_terms, lerp_at, lerp_terms};
 
@@ -39,9 +39,9 @@ enum LineTerm {
 ///
 /// The common case applies inside its windows, tried in turn: for a grid in memory one, the
 /// road's range and its values; for a grid read in place up to [`WINDOWS`], each the cells
-/// of one pinned tile (see [`PlainGrid::enter_window`]; at first without the tile's last
-/// cross sections, see [`EDGE`]), whose values its base and `nu` then address as they
-/// address a grid in memory. A point outside them takes another path, which widens or
+/// of the halves read of one pinned tile (see [`PlainGrid::enter_window`]; at first
+/// without their last cross sections, see [`EDGE`]), whose values its base and `nu` then
+/// address as they address a grid in memory. A point outside them takes another path, which widens or
 /// moves a window. The unused windows' bounds are NaN.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PlainGrid {
@@ -77,16 +77,30 @@ unsafe impl Sync for PlainGrid {}
 /// left while another still reads it (the window given up is the one entered longest ago).
 pub(crate) const WINDOWS: usize = 6;
 
-/// Cross sections at each end of a tile. A window entered at the start of its tile (a
-/// wheel moving on along u) leaves out those at its end at first: the first lookup there
-/// widens it ([`PlainGrid::widen_window`]), and its contact point asks for the next tile
-/// along, some steps before the wheel enters it (21 steps at 30 m/s on 1 cm cross
-/// sections, at 1 kHz).
+/// Cross sections at each end of what a window holds of its tile (the halves of it read).
+/// A window entered at the start of that (a wheel moving on along u) leaves out those at
+/// its end at first: the first lookup there widens it ([`PlainGrid::widen_window`]), and
+/// its contact point asks for the next half along, some steps before the wheel enters it
+/// (21 steps at 30 m/s on 1 cm cross sections, at 1 kHz).
 const EDGE: usize = 64;
 
-/// Whether the cell `iu` along lies at the end of its tile (see [`EDGE`]).
+/// Whether the cell `iu` along lies at the end of its half of a tile (see [`EDGE`]).
 pub(crate) fn near_tile_end(iu: usize) -> bool {
-    iu % TILE_U >= TILE_U - EDGE
+    iu % HALF_U >= HALF_U - EDGE
+}
+
+/// The halves along (first, last; numbered from the grid's start) that a window on the
+/// tile of the cell `iu` along can hold when the tile's halves `halves` were read (bit `h`:
+/// half `h`): the cell's and the other one where it was read too; `None` where the
+/// cell's own was not read.
+fn held_halves(iu: usize, halves: u32) -> Option<(usize, usize)> {
+    let (tu, h) = (iu / TILE_U, half_of(iu));
+    if halves & (1 << h) == 0 {
+        return None;
+    }
+    let first = if h == 1 && halves & 1 != 0 { 0 } else { h };
+    let last = if h == 0 && halves & 2 != 0 { 1 } else { h };
+    Some((2 * tu + first, 2 * tu + last))
 }
 
 /// Where the common case applies in one window, and where the window's values lie.
@@ -267,30 +281,37 @@ impl PlainGrid {
     }
 
     /// Makes the tile of the cell (`iu`, `iv`) of a grid read in place, pinned as `pin`
-    /// with its values at `values` ([`Tiles::pin`]), window 0, the windows before it
-    /// moving one on (the last one's tile is the caller's to hand back: `pins` holds the
-    /// pins of the windows as they were, and is moved on alike). The common case then
-    /// applies to the points whose cells lie in the tile (and in the road's range; entered
-    /// at the tile's start, not yet its end: see [`EDGE`]), found exactly as
-    /// [`PlainGrid::cell`] finds them, and reads their values from the tile.
+    /// with its values at `values` and its halves `halves` read ([`Tiles::pin`]), window 0,
+    /// the windows before it moving one on (the last one's tile is the caller's to hand
+    /// back: `pins` holds the pins of the windows as they were, and is moved on alike).
+    /// The common case then applies to the points whose cells lie in the halves of the
+    /// tile read (and in the road's range; entered at their start, not yet their end: see
+    /// [`EDGE`]), found exactly as [`PlainGrid::cell`] finds them, and reads their values
+    /// from the tile.
     pub(crate) fn enter_window(
         &mut self,
         (iu, iv): (usize, usize),
         pin: Pin,
         values: *const f32,
+        halves: u32,
         pins: &mut [Option<Pin>; WINDOWS],
     ) -> Option<Pin> {
         let (tu, tv) = tile_of(iu, iv);
-        // SAFETY: the bounds belong to the road, which is alive while the contact point
-        // holding this `PlainGrid` holds it.
-        let bounds = unsafe { &*self.bounds };
-        // Entered at its start, the window leaves the tile's end out (any bound below the
-        // tile's own leaves out only points that then take another path; a NaN bound stays).
-        let before_end = self.u_first + ((tu + 1) * TILE_U - EDGE) as f64 * self.u_inc;
-        let to = |u_to: f64| if iu % TILE_U < EDGE && before_end < u_to { before_end } else { u_to };
-        let range = match (bounds.along(tu), bounds.across(tv)) {
-            (Some([u_from, u_to]), Some([v_from, v_to])) => [u_from, to(u_to), v_from, v_to],
-            _ => [f64::NAN; 4],
+        let range = match held_halves(iu, halves) {
+            Some((first, last)) => {
+                let range = self.halves_range((first, last), tv);
+                // Entered at its start, the window leaves the end out (any bound below the
+                // tile's own leaves out only points that then take another path; a NaN
+                // bound stays).
+                let before_end = self.u_first + ((last + 1) * HALF_U - EDGE) as f64 * self.u_inc;
+                match range {
+                    [u_from, u_to, v_from, v_to] if iu - first * HALF_U < EDGE && before_end < u_to => {
+                        [u_from, before_end, v_from, v_to]
+                    }
+                    range => range,
+                }
+            }
+            None => [f64::NAN; 4],
         };
         let z = values.wrapping_sub(tv * TILE_V * TILE_STRIDE + tu * TILE_U);
         let gone = pins[WINDOWS - 1].take();
@@ -305,6 +326,18 @@ impl PlainGrid {
         gone
     }
 
+    /// Where the cells of the halves `first..=last` along and of tile row `tv` lie: u from,
+    /// u to, v from, v to (NaN beyond the grid).
+    fn halves_range(&self, (first, last): (usize, usize), tv: usize) -> [f64; 4] {
+        // SAFETY: the bounds belong to the road, which is alive while the contact point
+        // holding this `PlainGrid` holds it.
+        let bounds = unsafe { &*self.bounds };
+        match (bounds.along(first), bounds.along(last), bounds.across(tv)) {
+            (Some([u_from, _]), Some([_, u_to]), Some([v_from, v_to])) => [u_from, u_to, v_from, v_to],
+            _ => [f64::NAN; 4],
+        }
+    }
+
     /// Removes the windows of a grid read in place (no point takes the common case until
     /// another is set).
     pub(crate) fn clear_windows(&mut self) {
@@ -315,16 +348,17 @@ impl PlainGrid {
     }
 
     /// `cell` (of [`PlainGrid::road_cell`] at (u, v)) read from the window of its tile when
-    /// there is one (as when the window left out the end of its tile, where the cell
-    /// lies): the window then holds its whole tile. `None` otherwise.
+    /// there is one and the cell's half of the tile was read (as when the window left out
+    /// the end of what it held, where the cell lies, or the tile's other half was read
+    /// since): the window then holds every half of its tile read. `None` otherwise.
     pub(crate) fn widen_window(&mut self, cell: PlainCell, u: f64, v: f64) -> Option<PlainCell> {
         let (tu, tv) = tile_of(cell.iu, cell.iv);
         let k = self.window_tiles.iter().position(|&t| t == (tu, tv))?;
-        // SAFETY: as in `enter_window`.
-        let [_, u_to] = unsafe { &*self.bounds }.along(tu)?;
+        // SAFETY: the window's tile is pinned, so its pool is alive (the road holds it).
+        let halves = unsafe { self.tiles.as_ref()? }.halves(cell.iu, cell.iv);
+        let range = self.halves_range(held_halves(cell.iu, halves)?, tv);
         let w = &mut self.windows[k];
-        let [u_from, _, v_from, v_to] = w.range;
-        *w = Bounds::new([u_from, u_to, v_from, v_to], w.z);
+        *w = Bounds::new(range, w.z);
         w.holds(u, v).then_some(PlainCell { z: w.z, ..cell })
     }
 
