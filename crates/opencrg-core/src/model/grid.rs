@@ -240,7 +240,8 @@ impl Grid {
         Some(GridPart { tiles: Tiles::new(Arc::new(records), Vec::new(), tiles.capacity()) })
     }
 
-    /// Tiles a grid read in place has read from its file so far (0 in memory).
+    /// Halves of tiles a grid read in place has read from its file so far (0 in memory;
+    /// a tile is read half by half).
     pub fn tiles_read(&self) -> usize {
         self.tiles().map_or(0, |t| t.fills())
     }

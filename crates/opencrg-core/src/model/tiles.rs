@@ -164,7 +164,7 @@ pub(crate) struct Tiles {
     slots: Box<[Slot]>,
     values: Box<[AtomicU32]>,
     fill: Mutex<FillState>,
-    /// Tiles filled so far.
+    /// Halves of tiles read so far.
     fills: AtomicUsize,
 }
 
@@ -226,7 +226,7 @@ impl Tiles {
         &self.ops
     }
 
-    /// Tiles filled so far.
+    /// Halves of tiles read so far.
     pub(crate) fn fills(&self) -> usize {
         self.fills.load(Ordering::Relaxed)
     }
