@@ -13,11 +13,11 @@
  *   cc -O2 -Wall -Wextra -Iinclude bench/call_cycles.c -ldl -lm -o target/call_cycles
  */
 #define _GNU_SOURCE
-#include <dlfcn.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "car.h"
+#include "dl_road.h"
 #if defined(__x86_64__)
 #include <x86intrin.h>
 
@@ -25,16 +25,6 @@
 static const long band_top[BANDS] = { 20, 40, 60, 80, 120, 200, 400, 1000, -1 };
 
 typedef int (*Eval1)(int, double, double, double *);
-
-static void *symbol(void *h, const char *name)
-{
-    void *f = dlsym(h, name);
-    if (!f) {
-        fprintf(stderr, "%s\n", dlerror());
-        exit(1);
-    }
-    return f;
-}
 
 static int band(long cycles)
 {
@@ -53,27 +43,14 @@ int main(int argc, char **argv)
     double speed = atof(argv[3]);
     int shared = !strcmp(argv[4], "shared");
     long steps = argc > 5 ? atol(argv[5]) : 100000;
-    void *h = dlopen(argv[2], RTLD_NOW | RTLD_LOCAL);
-    if (!h) {
-        fprintf(stderr, "%s\n", dlerror());
-        return 1;
-    }
-    ((void (*)(int))symbol(h, "crgMsgSetLevel"))(0);
-    int data = ((int (*)(const char *))symbol(h, "crgLoaderReadFile"))(argv[1]);
-    if (data <= 0) {
-        fprintf(stderr, "call_cycles: cannot load %s\n", argv[1]);
-        return 1;
-    }
-    ((int (*)(int))symbol(h, "crgDataSetModifiersApply"))(data);
+    void *h = dl_library(argv[2], RTLD_NOW | RTLD_LOCAL);
     struct Road road;
-    ((int (*)(int, double *, double *))symbol(h, "crgDataSetGetURange"))(data, &road.umin, &road.umax);
     int cp[WHEELS];
-    for (int w = 0; w < WHEELS; w++)
-        cp[w] = ((int (*)(int))symbol(h, "crgContactPointCreate"))(data);
-    Eval1 uv2z = (Eval1)symbol(h, "crgEvaluv2z");
+    dl_open_road(h, argv[2], argv[1], &road, cp);
+    Eval1 uv2z = (Eval1)dl_symbol(h, "crgEvaluv2z");
     struct Path p;
     path_alloc(&p, steps);
-    drive(&road, &p, 0.0, speed, steps, (Uv2xy)symbol(h, "crgEvaluv2xy"), cp[0]);
+    drive(&road, &p, 0.0, speed, steps, (Uv2xy)dl_symbol(h, "crgEvaluv2xy"), cp[0]);
     const char *dump_path = getenv("DUMP");
     FILE *dump = dump_path ? fopen(dump_path, "w") : NULL;
     long count[BANDS] = { 0 };

@@ -26,12 +26,12 @@
  * this library is faster).
  */
 #define _GNU_SOURCE
-#include <dlfcn.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include "car.h"
+#include "dl_road.h"
 
 #define CHUNK 2000
 #define MAX_LIBS 8
@@ -59,38 +59,15 @@ static double now(void)
     return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
-static void *symbol(void *h, const char *name)
-{
-    void *f = dlsym(h, name);
-    if (!f) {
-        fprintf(stderr, "%s\n", dlerror());
-        exit(1);
-    }
-    return f;
-}
-
 static void load(struct Lib *l, const char *road)
 {
-    void *h = dlopen(l->path, RTLD_NOW | RTLD_LOCAL | RTLD_DEEPBIND);
-    if (!h) {
-        fprintf(stderr, "%s\n", dlerror());
-        exit(1);
-    }
-    ((void (*)(int))symbol(h, "crgMsgSetLevel"))(0);
-    l->data = ((int (*)(const char *))symbol(h, "crgLoaderReadFile"))(road);
-    if (l->data <= 0) {
-        fprintf(stderr, "%s: cannot load %s\n", l->path, road);
-        exit(1);
-    }
-    ((int (*)(int))symbol(h, "crgDataSetModifiersApply"))(l->data);
-    ((int (*)(int, double *, double *))symbol(h, "crgDataSetGetURange"))(l->data, &l->road.umin, &l->road.umax);
-    for (int w = 0; w < WHEELS; w++)
-        l->cp[w] = ((int (*)(int))symbol(h, "crgContactPointCreate"))(l->data);
-    l->uv2z = (Eval1)symbol(h, "crgEvaluv2z");
-    l->xy2z = (Eval1)symbol(h, "crgEvalxy2z");
-    l->xy2uv = (Eval2)symbol(h, "crgEvalxy2uv");
-    l->xy2pk = (Eval2)symbol(h, "crgEvalxy2pk");
-    l->uv2xy = (Eval2)symbol(h, "crgEvaluv2xy");
+    void *h = dl_library(l->path, RTLD_NOW | RTLD_LOCAL | RTLD_DEEPBIND);
+    l->data = dl_open_road(h, l->path, road, &l->road, l->cp);
+    l->uv2z = (Eval1)dl_symbol(h, "crgEvaluv2z");
+    l->xy2z = (Eval1)dl_symbol(h, "crgEvalxy2z");
+    l->xy2uv = (Eval2)dl_symbol(h, "crgEvalxy2uv");
+    l->xy2pk = (Eval2)dl_symbol(h, "crgEvalxy2pk");
+    l->uv2xy = (Eval2)dl_symbol(h, "crgEvaluv2xy");
 }
 
 static volatile double g_sink;

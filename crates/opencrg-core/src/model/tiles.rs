@@ -85,13 +85,16 @@ fn pin_slot(slot: &Slot) -> bool {
 
 /// The bit of [`Slot::halves`] that says half `half` was read.
 #[inline(always)]
-fn read_bit(half: usize) -> u32 {
+pub(crate) const fn read_bit(half: usize) -> u32 {
     1 << half
 }
 
+/// The bits of [`Slot::halves`] that say which halves were read.
+const READ_BITS: u32 = read_bit(0) | read_bit(1);
+
 /// The bit of [`Slot::halves`] that says half `half` is being read.
 #[inline(always)]
-fn reading_bit(half: usize) -> u32 {
+const fn reading_bit(half: usize) -> u32 {
     4 << half
 }
 
@@ -274,35 +277,37 @@ impl Tiles {
     /// lie, long section by long section, [`TILE_STRIDE`] apart (valid as long as the
     /// pool lives and the pin is not handed back). The pin is handed back to this pool
     /// ([`Tiles::unpin`]). Also which halves of the tile were read then (bit `h`: half
-    /// `h`, see [`Tiles::halves`]); the cell's own may not be.
+    /// `h`, see [`read_bit`]); `None` too where the cell's own half was not read.
     pub(crate) fn pin(&self, iu: usize, iv: usize) -> Option<(Pin, *const f32, u32)> {
         let (id, _) = self.place(iu, iv)?;
-        let s = self.directory.get(id)?.load(Ordering::Acquire).wrapping_sub(1) as usize;
-        let slot = self.slots.get(s)?;
+        let (s, slot) = self.slot_of(id)?;
         let pin = Pin { slot: u32::try_from(s + 1).ok().and_then(NonZeroU32::new)? };
         let values = self.values.get(s * TILE_LEN..)?.as_ptr().cast::<f32>();
         if !pin_slot(slot) {
             return None;
         }
         // Pinned, the slot keeps what it holds; it may have been filled anew before.
-        if slot.tile.load(Ordering::Acquire) as usize != id {
+        let halves = slot.halves.load(Ordering::Acquire) & READ_BITS;
+        if slot.tile.load(Ordering::Acquire) as usize != id || halves & read_bit(half_of(iu)) == 0 {
             slot.pins.fetch_sub(1, Ordering::Release);
             return None;
         }
-        Some((pin, values, slot.halves.load(Ordering::Acquire) & 3))
+        Some((pin, values, halves))
+    }
+
+    /// The slot the directory gives for tile `id` (which may hold another tile by now).
+    #[inline(always)]
+    fn slot_of(&self, id: usize) -> Option<(usize, &Slot)> {
+        let s = self.directory.get(id)?.load(Ordering::Acquire).wrapping_sub(1) as usize;
+        Some((s, self.slots.get(s)?))
     }
 
     /// Which halves of the tile of the cell (`iu`, `iv`) were read (bit `h`: half `h`), as
     /// far as a contact point pinning it needs to know: 0 where the tile is not present.
     /// A half once read stays so while the tile is pinned.
     pub(crate) fn halves(&self, iu: usize, iv: usize) -> u32 {
-        let Some((id, _)) = self.place(iu, iv) else { return 0 };
-        let Some(entry) = self.directory.get(id) else { return 0 };
-        let s = entry.load(Ordering::Acquire).wrapping_sub(1) as usize;
-        match self.slots.get(s) {
-            Some(slot) if slot.tile.load(Ordering::Acquire) as usize == id => slot.halves.load(Ordering::Acquire) & 3,
-            _ => 0,
-        }
+        let present = |(id, _)| self.slot_of(id).filter(|(_, slot)| slot.tile.load(Ordering::Acquire) as usize == id);
+        self.place(iu, iv).and_then(present).map_or(0, |(_, slot)| slot.halves.load(Ordering::Acquire) & READ_BITS)
     }
 
     /// Asks the processor to start loading what a wheel at the cell (`iu`, `iv`) reads first
@@ -313,9 +318,7 @@ impl Tiles {
     pub(crate) fn ask_for_next_along(&self, iu: usize, iv: usize) {
         let next = (iu / HALF_U + 1) * HALF_U;
         let Some((id, at)) = self.place(next, iv) else { return };
-        let Some(entry) = self.directory.get(id) else { return };
-        let s = entry.load(Ordering::Relaxed).wrapping_sub(1) as usize;
-        let Some(slot) = self.slots.get(s) else { return };
+        let Some((s, slot)) = self.slot_of(id) else { return };
         if slot.halves.load(Ordering::Relaxed) & read_bit(half_of(next)) == 0 {
             return;
         }
@@ -353,8 +356,7 @@ impl Tiles {
     /// The cell's values when its tile is present and its half `half` was read.
     #[inline(always)]
     fn try_read(&self, id: usize, at: usize, half: usize) -> Option<[f32; 4]> {
-        let s = self.directory.get(id)?.load(Ordering::Acquire).wrapping_sub(1) as usize;
-        let slot = self.slots.get(s)?;
+        let (s, slot) = self.slot_of(id)?;
         let seq = slot.seq.load(Ordering::Acquire);
         if seq & 1 != 0
             || slot.tile.load(Ordering::Relaxed) as usize != id
@@ -385,8 +387,8 @@ impl Tiles {
         };
         let slot = &self.slots[s];
         let decoded = self.decode(id, half, self.half_values(s, half));
-        let tile = if decoded.is_ok() { id as u32 } else { ABSENT };
-        slot.halves.store(if decoded.is_ok() { read_bit(half) } else { 0 }, Ordering::Relaxed);
+        let (tile, halves) = if decoded.is_ok() { (id as u32, read_bit(half)) } else { (ABSENT, 0) };
+        slot.halves.store(halves, Ordering::Relaxed);
         slot.tile.store(tile, Ordering::Relaxed);
         slot.seq.store(seq.wrapping_add(2), Ordering::Release);
         // The directory before the slot is given free: whoever claims the slot next finds

@@ -394,15 +394,10 @@ impl ContactPoint {
     /// Makes the tile of the cell (`iu`, `iv`) a window: a present tile pinned now, the
     /// first window (the one a lookup tests first: a wheel's next points lie on the tile
     /// it entered last), the others moved one on and the one entered longest ago
-    /// unpinned; `None` where the tile is not present.
+    /// unpinned; `None` where the tile, or the cell's half of it, is not present.
     fn enter_window(&mut self, iu: usize, iv: usize) -> Option<()> {
         let tiles = self.road.grid.tiles()?;
         let (pin, values, halves) = tiles.pin(iu, iv)?;
-        // The cell's half of the tile not read yet: the caller reads it first.
-        if halves & (1 << crate::model::tiles::half_of(iu)) == 0 {
-            tiles.unpin(pin);
-            return None;
-        }
         let w = &mut self.windows;
         // The pool is kept from the first tile entered on (a new road makes new windows,
         // so another pool here would be a contact point's mistake: its pins go back first).

@@ -10,7 +10,7 @@
 use crate::model::grid::{prefetch_cell_far_from, prefetch_path_from, Store, VLayout};
 use crate::model::road::Road;
 use crate::model::tile_bounds::{inner_bound, TileBounds};
-use crate::model::tiles::{half_of, tile_of, Pin, Tiles, HALF_U, TILE_STRIDE, TILE_U, TILE_V};
+use crate::model::tiles::{half_of, read_bit, tile_of, Pin, Tiles, HALF_U, TILE_STRIDE, TILE_U, TILE_V};
 use crate::query::eval::EvalOptions;
 use crate::query::interpolation::{bilinear, corner_terms, lerp_at, lerp_terms};
 
@@ -90,16 +90,16 @@ pub(crate) fn near_tile_end(iu: usize) -> bool {
 }
 
 /// The halves along (first, last; numbered from the grid's start) that a window on the
-/// tile of the cell `iu` along can hold when the tile's halves `halves` were read (bit `h`:
-/// half `h`): the cell's and the other one where it was read too; `None` where the
+/// tile of the cell `iu` along can hold when the tile's halves `halves` were read (see
+/// [`read_bit`]): the cell's and the other one where it was read too; `None` where the
 /// cell's own was not read.
 fn held_halves(iu: usize, halves: u32) -> Option<(usize, usize)> {
     let (tu, h) = (iu / TILE_U, half_of(iu));
-    if halves & (1 << h) == 0 {
+    if halves & read_bit(h) == 0 {
         return None;
     }
-    let first = if h == 1 && halves & 1 != 0 { 0 } else { h };
-    let last = if h == 0 && halves & 2 != 0 { 1 } else { h };
+    let first = if halves & read_bit(0) != 0 { 0 } else { h };
+    let last = if halves & read_bit(1) != 0 { 1 } else { h };
     Some((2 * tu + first, 2 * tu + last))
 }
 
