@@ -41,8 +41,8 @@ enum LineTerm {
 /// road's range and its values; for a grid read in place up to [`WINDOWS`], each the cells
 /// of the halves read of one pinned tile (see [`PlainGrid::enter_window`]; at first
 /// without their last cross sections, see [`EDGE`]), whose values its base and `nu` then
-/// address as they address a grid in memory. A point outside them takes another path, which widens or
-/// moves a window. The unused windows' bounds are NaN.
+/// address as they address a grid in memory. A point outside them takes another path,
+/// which widens or moves a window. The unused windows' bounds are NaN.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PlainGrid {
     windows: [Bounds; WINDOWS],
