@@ -42,7 +42,12 @@ int main(int argc, char **argv)
     }
     double speed = atof(argv[3]);
     int shared = !strcmp(argv[4], "shared");
-    long steps = argc > 5 ? atol(argv[5]) : 100000;
+    char *end = "";
+    long steps = argc > 5 ? strtol(argv[5], &end, 10) : 100000;
+    if (*end || !(speed > 0 && speed <= 1000) || (!shared && strcmp(argv[4], "own")) || steps < 1 || steps > 10000000) {
+        fprintf(stderr, "call_cycles: SPEED is m/s above 0 and at most 1000, then shared or own, STEPS 1 to 10000000\n");
+        return 2;
+    }
     void *h = dl_library(argv[2], RTLD_NOW | RTLD_LOCAL);
     struct Road road;
     int cp[WHEELS];
